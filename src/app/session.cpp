@@ -1,0 +1,174 @@
+#include "app/session.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#ifndef NCVM_SOURCE_MACROS
+#define NCVM_SOURCE_MACROS ""
+#endif
+
+namespace ncvm {
+
+std::string bundledMacrosFolder() {
+  namespace fs = std::filesystem;
+  if (const char* env = std::getenv("NCVM_MACROS"); env && *env) return env;
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    fs::path installed = exe.parent_path() / ".." / "share" / "ncvm" / "macros";
+    if (fs::is_directory(installed, ec)) return installed.string();
+  }
+  if (fs::is_directory(NCVM_SOURCE_MACROS, ec)) return NCVM_SOURCE_MACROS;
+  return {};
+}
+
+static ParseOptions parseOptionsFor(const Setup& s) {
+  ParseOptions o;
+  o.maxLineLength = s.limits.maxLineLength;
+  o.eightDigitO = s.control == "30i" || s.control == "31i" || s.control == "0i-F";
+  return o;
+}
+
+Session::Session(Setup setup)
+    : setup_(std::move(setup)), store_(files_, parseOptionsFor(setup_), setup_.limits.maxFileBytes) {}
+
+void Session::addProgramFile(const std::string& path) {
+  auto progs = store_.addFile(path);
+  if (!main_ && !progs.empty()) main_ = progs.front();
+  ownPrograms_.insert(ownPrograms_.end(), progs.begin(), progs.end());
+}
+
+void Session::addProgramText(std::string_view text, const std::string& name) {
+  auto progs = store_.addText(text, name);
+  if (!main_ && !progs.empty()) main_ = progs.front();
+  ownPrograms_.insert(ownPrograms_.end(), progs.begin(), progs.end());
+}
+
+void Session::addLibrary(const std::string& dir) { store_.addFolder(dir); }
+
+void Session::addBundledMacros() {
+  std::string dir = bundledMacrosFolder();
+  if (!dir.empty()) store_.addFolder(dir);
+}
+
+nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files) {
+  return nlohmann::json{{"code", a.code},
+                        {"text", a.text},
+                        {"file", files.name(a.loc.file)},
+                        {"line", a.loc.line},
+                        {"col", a.loc.col},
+                        {"n", a.n ? nlohmann::json(*a.n) : nlohmann::json(nullptr)}};
+}
+
+namespace {
+nlohmann::json axes3(const AxisArray& a) { return nlohmann::json::array({a[0], a[1], a[2]}); }
+}  // namespace
+
+Session::Result Session::run(EventSink* sink) {
+  Result r;
+  if (!main_) throw std::runtime_error("no program to run");
+  EventSink none;
+  Executor exec(setup_, store_, sink ? *sink : none);
+  r.end = exec.run(*main_);
+  r.alarm = exec.alarm();
+  r.stats = exec.stats();
+  r.warnings = exec.warnings();
+  r.printed = exec.printed();
+
+  nlohmann::json& s = r.state;
+  s["end"] = endReasonName(r.end);
+  s["alarm"] = r.alarm ? alarmJson(*r.alarm, files_) : nlohmann::json(nullptr);
+  s["program"] = main_->label;
+  s["position"] = {{"work", axes3(exec.workPosition())}, {"machine", axes3(exec.machinePosition())}};
+  nlohmann::json modal = nlohmann::json::object();
+  const ModalState& m = exec.modal();
+  for (int g = 1; g < kGroups; ++g) {
+    bool known = false;
+    for (const auto& info : gcodeTable())
+      known |= (info.seriesMask & seriesBit(setup_.series())) && info.group == g;
+    if (known) modal[std::to_string(g)] = m.g[static_cast<size_t>(g)] / 10.0;
+  }
+  modal["F"] = m.feed;
+  modal["S"] = m.speed;
+  modal["T"] = m.tool;
+  modal["D"] = m.dOffset;
+  modal["H"] = m.hOffset;
+  modal["units"] = m.unit == InputUnit::Inch ? "inch" : "mm";
+  s["modal"] = modal;
+  nlohmann::json vars = nlohmann::json::object();
+  for (const auto& [n, v] : exec.userVariables()) vars["#" + std::to_string(n)] = v;
+  s["vars"] = vars;
+  // Offsets are all zero until the machine-model issue gives them a setup table.
+  nlohmann::json work = nlohmann::json::object();
+  for (const char* name : {"EXT", "G54", "G55", "G56", "G57", "G58", "G59"})
+    work[name] = nlohmann::json::array({0.0, 0.0, 0.0});
+  s["work_offsets"] = work;
+  s["tool_offsets"] = nlohmann::json::object();
+  s["cycle_time"] = r.stats.time;
+  s["blocks"] = r.stats.blocks;
+  s["moves"] = r.stats.moves;
+  s["path_length"] = {{"rapid", r.stats.rapidLength}, {"feed", r.stats.feedLength}};
+  nlohmann::json warns = nlohmann::json::array();
+  for (const auto& w : r.warnings)
+    warns.push_back({{"code", w.code}, {"text", w.text}, {"file", files_.name(w.loc.file)}, {"line", w.loc.line}});
+  s["warnings"] = warns;
+  return r;
+}
+
+nlohmann::json Session::check() const {
+  struct Finding {
+    bool alarm;
+    Alarm a;
+  };
+  std::vector<Finding> found;
+  bool dpi = setup_.dpi();
+  for (const Program* p : ownPrograms_) {
+    for (const auto& a : p->errors) found.push_back({true, a});
+    for (const auto& a : p->structural) found.push_back({true, a});
+    for (const Block& b : p->blocks) {
+      if (b.kind != BlockKind::Nc) continue;
+      const Word* w = p->words.data() + b.firstWord;
+      bool macroCall = false, latheCycle = false;
+      for (uint32_t k = 0; k < b.nWords; ++k) {
+        if (w[k].letter != 'G' || w[k].kind != WordKind::Literal) continue;
+        int g = static_cast<int>(w[k].value * 10 + 0.5);
+        macroCall |= g == 650 || g == 660;
+        latheCycle |= setup_.kind == MachineKind::Lathe && (g == 740 || g == 750 || g == 760);
+      }
+      uint32_t seen = 0;
+      for (uint32_t k = 0; k < b.nWords; ++k) {
+        const Word& wd = w[k];
+        if (wd.letter < 'A' || wd.letter > 'Z') continue;
+        uint32_t bit = 1u << (wd.letter - 'A');
+        if ((seen & bit) && wd.letter != 'G' && wd.letter != 'M' && !macroCall) {
+          Alarm a{"W002", fmt::format("{} given twice in one block: the last one counts", wd.letter),
+                  SourceLoc{b.loc.file, b.loc.line, wd.col}, std::nullopt, p->number};
+          found.push_back({false, a});
+        }
+        seen |= bit;
+        bool lengthAddress = std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
+        if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P')) lengthAddress = false;
+        if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) && wd.value != 0) {
+          Alarm a{"W001",
+                  fmt::format("{}{} has no decimal point: it means {} least increments ({} mm), not {} mm",
+                              wd.letter, wd.value, wd.value, wd.value * 0.001, wd.value),
+                  SourceLoc{b.loc.file, b.loc.line, wd.col}, std::nullopt, p->number};
+          found.push_back({false, a});
+        }
+      }
+    }
+  }
+  std::stable_sort(found.begin(), found.end(), [](const Finding& x, const Finding& y) {
+    if (x.a.loc.file != y.a.loc.file) return x.a.loc.file < y.a.loc.file;
+    if (x.a.loc.line != y.a.loc.line) return x.a.loc.line < y.a.loc.line;
+    return x.a.loc.col < y.a.loc.col;
+  });
+  nlohmann::json out{{"alarms", nlohmann::json::array()}, {"warnings", nlohmann::json::array()}};
+  for (const auto& f : found) out[f.alarm ? "alarms" : "warnings"].push_back(alarmJson(f.a, files_));
+  return out;
+}
+
+}  // namespace ncvm

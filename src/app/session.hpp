@@ -1,0 +1,62 @@
+#pragma once
+// One verification job as a library call: load the programs, run or check the main one,
+// and build the state and check reports. The CLI, the golden tests and (later) the server
+// all go through here.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "canon/events.hpp"
+#include "exec/executor.hpp"
+#include "lang/program_store.hpp"
+#include "machine/setup.hpp"
+
+namespace ncvm {
+
+// Where the bundled macros/ folder is: $NCVM_MACROS, beside the executable
+// (../share/ncvm/macros), or the source tree this binary was built from.
+std::string bundledMacrosFolder();
+
+class Session {
+ public:
+  explicit Session(Setup setup);
+
+  // The first file's first program is the main program; the others join the store.
+  void addProgramFile(const std::string& path);
+  void addProgramText(std::string_view text, const std::string& name);
+  void addLibrary(const std::string& dir);
+  void addBundledMacros();
+
+  const Setup& setup() const { return setup_; }
+  SourceFiles& files() { return files_; }
+  ProgramStore& store() { return store_; }
+  const Program* main() const { return main_; }
+
+  struct Result {
+    EndReason end = EndReason::Eof;
+    std::optional<Alarm> alarm;
+    RunStats stats;
+    std::vector<Warning> warnings;
+    nlohmann::json state;
+    std::string printed;  // DPRNT/BPRNT output
+  };
+  // Runs the main program; `sink` receives every event (may be nullptr).
+  Result run(EventSink* sink);
+
+  // Everything found without running: syntax errors, loop and label errors and the
+  // decimal-point and duplicate-word warnings, for the programs of the given files.
+  nlohmann::json check() const;
+
+ private:
+  Setup setup_;
+  SourceFiles files_;
+  ProgramStore store_;
+  const Program* main_ = nullptr;
+  std::vector<const Program*> ownPrograms_;  // from files named on the command line
+};
+
+nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);
+
+}  // namespace ncvm

@@ -1,0 +1,195 @@
+// The ncvm command: run, check, and the generated reference tables (alarms, codes).
+// Exit status: 0 normal end, 3 alarm, 2 usage or setup error.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/session.hpp"
+#include "core/alarm.hpp"
+#include "exec/gcode_table.hpp"
+#include "report/atomic_file.hpp"
+#include "report/trace_writer.hpp"
+
+namespace {
+
+using namespace ncvm;
+
+constexpr int kExitOk = 0;
+constexpr int kExitUsage = 2;
+constexpr int kExitAlarm = 3;
+
+struct CommonOptions {
+  std::vector<std::string> programs;
+  std::string setupPath;
+  std::vector<std::string> libs;
+  std::vector<std::string> sets;
+  bool noMacros = false;
+};
+
+void addCommon(CLI::App* cmd, CommonOptions& o) {
+  cmd->add_option("PROGRAM", o.programs, "program file(s); the first file's first program runs")->required();
+  cmd->add_option("--setup", o.setupPath, "machine and job setup (TOML, docs/setup-format.md)");
+  cmd->add_option("--lib", o.libs, "folder of programs for M98/G65 calls (repeatable)");
+  cmd->add_option("--set", o.sets, "override a setting: 3401#0=1, DPI=1, block_skip.1=true, limits.max_blocks=1000");
+  cmd->add_flag("--no-macros", o.noMacros, "do not load the bundled macros/ folder");
+}
+
+Setup makeSetup(const CommonOptions& o) {
+  Setup s = o.setupPath.empty() ? defaultSetup() : loadSetup(o.setupPath);
+  for (const auto& kv : o.sets) applySetting(s, kv);
+  return s;
+}
+
+void loadPrograms(Session& session, const CommonOptions& o) {
+  for (const auto& p : o.programs) session.addProgramFile(p);
+  for (const auto& l : o.libs) session.addLibrary(l);
+  if (!o.noMacros) session.addBundledMacros();
+}
+
+std::string alarmLine(const Alarm& a, const SourceFiles& files) {
+  std::string s = fmt::format("{}:{}:{}: {} {}", files.name(a.loc.file), a.loc.line, a.loc.col, a.code, a.text);
+  if (a.n) s += fmt::format(" (N{})", *a.n);
+  return s;
+}
+
+std::string hms(double seconds) {
+  auto total = static_cast<int64_t>(seconds);
+  return fmt::format("{}:{:02d}:{:05.2f}", total / 3600, total / 60 % 60, seconds - static_cast<double>(total / 60 * 60));
+}
+
+int runCommand(const CommonOptions& o, const std::string& tracePath, const std::string& statePath,
+               const std::string& outputPath, bool quiet) {
+  Session session(makeSetup(o));
+  loadPrograms(session, o);
+  for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
+
+  std::unique_ptr<AtomicFile> traceFile;
+  std::unique_ptr<TraceWriter> trace;
+  if (!tracePath.empty()) {
+    traceFile = std::make_unique<AtomicFile>(tracePath);
+    trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(), session.setup().limits.maxTraceBytes);
+  }
+  Session::Result r = session.run(trace.get());
+  if (trace) {
+    trace->flush();
+    trace.reset();
+    traceFile->commit();
+  }
+  if (!statePath.empty()) writeFileAtomic(statePath, r.state.dump(2) + "\n");
+  std::string out = !outputPath.empty() ? outputPath : session.setup().dprntPath;
+  if (!r.printed.empty()) {
+    if (out.empty())
+      fmt::print(stderr, "ncvm: warning: DPRNT output discarded (give --output FILE or output.dprnt)\n");
+    else
+      writeFileAtomic(out, r.printed);
+  }
+
+  const Program* main = session.main();
+  if (!quiet) {
+    fmt::print("ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
+               endReasonName(r.end));
+    fmt::print("  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {} (length/feed)\n",
+               r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength, r.stats.rapidLength,
+               r.stats.feedLength, hms(r.stats.time));
+    for (const auto& w : r.warnings)
+      fmt::print("{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
+    if (!tracePath.empty()) fmt::print("  trace: {}\n", tracePath);
+    if (!statePath.empty()) fmt::print("  state: {}\n", statePath);
+    if (!r.printed.empty() && !out.empty()) fmt::print("  output: {}\n", out);
+  }
+  if (r.alarm) {
+    fmt::print("{}\n", alarmLine(*r.alarm, session.files()));
+    return kExitAlarm;
+  }
+  return kExitOk;
+}
+
+int checkCommand(const CommonOptions& o, bool json) {
+  Session session(makeSetup(o));
+  loadPrograms(session, o);
+  nlohmann::json report = session.check();
+  if (json) {
+    fmt::print("{}\n", report.dump(2));
+  } else {
+    for (const char* kind : {"alarms", "warnings"})
+      for (const auto& a : report[kind])
+        fmt::print("{}:{}:{}: {} {}\n", a["file"].get<std::string>(), a["line"].get<int>(), a["col"].get<int>(),
+                   a["code"].get<std::string>(), a["text"].get<std::string>());
+    fmt::print("ncvm check: {} alarm(s), {} warning(s)\n", report["alarms"].size(), report["warnings"].size());
+  }
+  return report["alarms"].empty() ? kExitOk : kExitAlarm;
+}
+
+void printAlarmTable() {
+  fmt::print("| code | message | meaning |\n|---|---|---|\n");
+  for (const auto& a : alarmTable()) fmt::print("| {} | {} | {} |\n", alarmCode(a.id), a.message, a.meaning);
+}
+
+void printCodeTable() {
+  static const char* status[] = {"supported", "accepted (no effect on the path)", "alarm PS0010 (not yet)"};
+  static const char* series[] = {"M", "T-A", "T-B", "T-C"};
+  fmt::print("| G code | series | group | status | meaning |\n|---|---|---|---|---|\n");
+  for (const auto& g : gcodeTable()) {
+    std::string s;
+    for (int k = 0; k < 4; ++k)
+      if (g.seriesMask & (1 << k)) s += (s.empty() ? "" : " ") + std::string(series[k]);
+    std::string code = fmt::format("G{:02d}", g.code10 / 10);
+    if (g.code10 % 10) code += fmt::format(".{}", g.code10 % 10);
+    fmt::print("| {} | {} | {} | {} | {} |\n", code, s, g.group == 0 ? std::string("00 (one-shot)") : fmt::format("{:02d}", g.group),
+               status[static_cast<int>(g.status)], g.meaning);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ncvm: a Fanuc-compatible CNC control emulator"};
+  app.set_version_flag("--version", "ncvm 0.1.0");
+  app.require_subcommand(1);
+
+  CommonOptions runOpts;
+  std::string tracePath, statePath, outputPath;
+  bool quiet = false;
+  auto* run = app.add_subcommand("run", "run a program and report what the machine does");
+  addCommon(run, runOpts);
+  run->add_option("--trace", tracePath, "write the event trace (JSON Lines)");
+  run->add_option("--state", statePath, "write the final state (JSON)");
+  run->add_option("--output", outputPath, "file for DPRNT/BPRNT output");
+  run->add_flag("-q,--quiet", quiet, "print only alarms");
+
+  CommonOptions checkOpts;
+  bool json = false;
+  auto* check = app.add_subcommand("check", "report what can be found without running");
+  addCommon(check, checkOpts);
+  check->add_flag("--json", json, "print the findings as JSON");
+
+  app.add_subcommand("alarms", "print the alarm table (Markdown)");
+  app.add_subcommand("codes", "print the G-code support table (Markdown)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kExitUsage;
+  }
+  try {
+    if (run->parsed()) return runCommand(runOpts, tracePath, statePath, outputPath, quiet);
+    if (check->parsed()) return checkCommand(checkOpts, json);
+    if (app.got_subcommand("alarms")) printAlarmTable();
+    if (app.got_subcommand("codes")) printCodeTable();
+    return kExitOk;
+  } catch (const SetupError& e) {
+    fmt::print(stderr, "ncvm: setup error: {}{}\n", e.what(), e.line ? fmt::format(" (line {})", e.line) : "");
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ncvm: {}\n", e.what());
+    return kExitUsage;
+  }
+}

@@ -1,0 +1,104 @@
+#include "core/alarm.hpp"
+
+#include <fmt/format.h>
+
+namespace ncvm {
+
+const std::vector<AlarmInfo>& alarmTable() {
+  static const std::vector<AlarmInfo> table = {
+      {AlarmId::TooManyDigits, "TOO MANY DIGIT", "A word has more digits than the address allows."},
+      {AlarmId::NoDataAfterAddress, "NO DATA AFTER ADDRESS",
+       "An address letter is not followed by a number, a variable or a bracket."},
+      {AlarmId::IllegalMinus, "ILLEGAL USE OF MINUS SIGN",
+       "A minus sign on an address that takes no sign (N, O, G, M, ...)."},
+      {AlarmId::IllegalDecimalPoint, "ILLEGAL USE OF DECIMAL POINT",
+       "A decimal point on an address that forbids it (P, M, S, T, H, D, L, N, O), or two points."},
+      {AlarmId::ImproperAddress, "IMPROPER NC-ADDRESS",
+       "A character that is not an address of this control (lower case, unknown letter, an axis the "
+       "machine lacks)."},
+      {AlarmId::ImproperGCode, "IMPROPER G-CODE",
+       "A G code the control does not have, or one ncvm does not support yet (the text says which)."},
+      {AlarmId::FeedZero, "FEED ZERO (COMMAND)", "A cutting move with F = 0 or no F ever given."},
+      {AlarmId::OverToleranceOfRadius, "OVER TOLERANCE OF RADIUS",
+       "Arc end point radius differs from the start radius by more than parameter 3410."},
+      {AlarmId::IllegalPlaneSelect, "ILLEGAL PLANE SELECT",
+       "An arc with an axis that is not in the selected plane."},
+      {AlarmId::NoRadiusOrCenter, "R OR I,J,K COMMAND NOT FOUND", "An arc without R or I/J/K."},
+      {AlarmId::CircleInRapid, "CIRCLE CUT IN RAPID (F0)", "An arc in rapid or with F0."},
+      {AlarmId::IllegalOffsetNumber, "ILLEGAL OFFSET NUMBER", "An H, D or T offset number out of range."},
+      {AlarmId::IllegalPInG10, "ILLEGAL P COMMAND IN G10", "G10 with an L or P it does not accept."},
+      {AlarmId::IllegalOffsetValueInG10, "ILLEGAL OFFSET VALUE IN G10", "G10 with a value out of range."},
+      {AlarmId::CannotG31InCompensation, "CAN NOT COMMANDED G31", "G31 while cutter compensation is on."},
+      {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC", "G27-G30 in canned-cycle mode."},
+      {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND", "G30 with P other than 2-4."},
+      {AlarmId::ProgramNumberOutOfRange, "ILLEGAL PROGRAM NUMBER",
+       "A program number outside 1-9999 (1-99999999 with 8-digit O numbers), or O0."},
+      {AlarmId::ProgramNotFound, "PROGRAM NOT FOUND",
+       "M98, G65, G66 or a code-triggered call names a program that is in no loaded file or "
+       "library."},
+      {AlarmId::TooManySubNesting, "TOO MANY SUB,MACRO NESTING",
+       "More nested subprogram calls than the control allows."},
+      {AlarmId::SequenceNotFound, "SEQUENCE NUMBER NOT FOUND", "M99 P names a sequence number that the "
+                                                                "caller lacks."},
+      {AlarmId::IntegerOverflow, "OVERFLOW :INTEGER", "An integer value out of range (BIN, BCD, AND/OR/XOR, "
+                                                      "M/S/T/H/D values)."},
+      {AlarmId::FloatOverflow, "OVERFLOW :FLOATING", "A result too large (EXP, POW, huge operands, NaN)."},
+      {AlarmId::ZeroDivide, "ZERO DIVIDE", "Division by zero (also TAN of 90 degrees)."},
+      {AlarmId::ImproperCommand, "IMPROPER COMMAND", "A function that cannot be used here."},
+      {AlarmId::IllegalExpressionFormat, "ILLEGAL EXPRESSION FORMAT",
+       "Bad expression syntax; a condition used as a value or a value used as a condition."},
+      {AlarmId::VariableOutOfRange, "VARIABLE NO. OUT OF RANGE", "A variable number the control does not "
+                                                                 "have."},
+      {AlarmId::WriteProtectedVariable, "WRITE PROTECTED VARIABLE",
+       "An assignment to #0 or to a read-only system variable."},
+      {AlarmId::TooManyBrackets, "TOO MANY BRACKET NESTING",
+       "More than five nested brackets, function brackets included."},
+      {AlarmId::ArgumentOutOfRange, "ARGUMENT VALUE OUT OF RANGE",
+       "A function argument outside its domain (SQRT of a negative, ASIN/ACOS beyond 1, LN of 0 or "
+       "less, ...)."},
+      {AlarmId::TooManyMacroNesting, "TOO MANY MACRO NESTING",
+       "More nested macro calls (G65, G66, code calls) than the control allows."},
+      {AlarmId::MissingEnd, "MISSING END STATEMENT", "A WHILE/DO without its END (found before running)."},
+      {AlarmId::MacroStatementFormat, "MACRO STATEMENT FORMAT ERROR",
+       "A macro statement that is not well formed (IF without GOTO/THEN, bad DPRNT, ...)."},
+      {AlarmId::IllegalLoopNumber, "ILLEGAL LOOP NUMBER",
+       "DO/END number outside 1-3, loops crossing, END without DO, or a jump into a loop."},
+      {AlarmId::DuplicateNcMacro, "DUPLICATE NC,MACRO STATEMENT", "NC words and a macro statement in one "
+                                                                  "block."},
+      {AlarmId::IllegalMacroSequence, "ILLEGAL MACRO SEQUENCE NUMBER",
+       "GOTO to a sequence number that is not in the program or out of 1-99999."},
+      {AlarmId::GAsArgument, "USE 'G' AS ARGUMENT", "G used as an argument of G65/G66."},
+      {AlarmId::BlockLimit, "BLOCK LIMIT REACHED",
+       "ncvm: the run executed more blocks than limits.max_blocks (runaway program)."},
+      {AlarmId::TimeLimit, "TIME LIMIT REACHED",
+       "ncvm: the simulated machine time passed limits.max_time_s (runaway program)."},
+      {AlarmId::OutputError, "OUTPUT FILE ERROR", "ncvm: an output file (DPRNT, trace) could not be "
+                                                  "written."},
+      {AlarmId::LineTooLong, "LINE TOO LONG", "ncvm: a block longer than limits.max_line_length."},
+      {AlarmId::ProgramTooLarge, "PROGRAM TOO LARGE", "ncvm: a file larger than limits.max_file_bytes."},
+      {AlarmId::TraceLimit, "TRACE LIMIT REACHED", "ncvm: the trace grew past limits.max_trace_bytes."},
+  };
+  return table;
+}
+
+const char* alarmMessage(AlarmId id) {
+  for (const auto& a : alarmTable())
+    if (a.id == id) return a.message;
+  return "ALARM";
+}
+
+std::string alarmCode(AlarmId id) { return fmt::format("PS{:04d}", static_cast<int>(id)); }
+
+static std::string joinText(AlarmId id, const std::string& detail) {
+  std::string t = alarmMessage(id);
+  if (!detail.empty()) t += " (" + detail + ")";
+  return t;
+}
+
+AlarmError::AlarmError(AlarmId id, std::string detail)
+    : std::runtime_error(joinText(id, detail)), code_(alarmCode(id)), text_(joinText(id, detail)) {}
+
+AlarmError::AlarmError(std::string code, std::string text)
+    : std::runtime_error(text), code_(std::move(code)), text_(std::move(text)) {}
+
+}  // namespace ncvm

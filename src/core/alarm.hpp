@@ -1,0 +1,103 @@
+#pragma once
+// Fanuc-style alarms. One table (alarm.cpp) holds every number and message; docs/alarms.md
+// is generated from it by `ncvm alarms`, so the two never drift apart.
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/source.hpp"
+
+namespace ncvm {
+
+// Alarm numbers follow the 0i-D/0i-F/30i "PS" list; ncvm's own limits use PS9xxx, which no
+// Fanuc control uses, so they cannot be mistaken for a control alarm.
+enum class AlarmId : uint16_t {
+  TooManyDigits = 3,
+  NoDataAfterAddress = 5,
+  IllegalMinus = 6,
+  IllegalDecimalPoint = 7,
+  ImproperAddress = 9,
+  ImproperGCode = 10,
+  FeedZero = 11,
+  OverToleranceOfRadius = 20,
+  IllegalPlaneSelect = 21,
+  NoRadiusOrCenter = 22,
+  CircleInRapid = 25,
+  IllegalOffsetNumber = 30,
+  IllegalPInG10 = 31,
+  IllegalOffsetValueInG10 = 32,
+  CannotG31InCompensation = 35,
+  G27to30InCycle = 44,
+  IllegalReferenceReturn = 46,
+  ProgramNumberOutOfRange = 74,
+  ProgramNotFound = 76,
+  TooManySubNesting = 77,
+  SequenceNotFound = 78,
+  IntegerOverflow = 110,
+  FloatOverflow = 111,
+  ZeroDivide = 112,
+  ImproperCommand = 113,
+  IllegalExpressionFormat = 114,
+  VariableOutOfRange = 115,
+  WriteProtectedVariable = 116,
+  TooManyBrackets = 118,
+  ArgumentOutOfRange = 119,
+  TooManyMacroNesting = 122,
+  MissingEnd = 124,
+  MacroStatementFormat = 125,
+  IllegalLoopNumber = 126,
+  DuplicateNcMacro = 127,
+  IllegalMacroSequence = 128,
+  GAsArgument = 129,
+  // ncvm limits and environment
+  BlockLimit = 9001,
+  TimeLimit = 9002,
+  OutputError = 9003,
+  LineTooLong = 9004,
+  ProgramTooLarge = 9005,
+  TraceLimit = 9006,
+};
+
+struct AlarmInfo {
+  AlarmId id;
+  const char* message;  // the control's message text
+  const char* meaning;  // one line for docs/alarms.md
+};
+
+const std::vector<AlarmInfo>& alarmTable();
+const char* alarmMessage(AlarmId id);
+std::string alarmCode(AlarmId id);  // "PS0112"
+
+struct Alarm {
+  std::string code;    // "PS0112", "MC3001"
+  std::string text;    // message shown by the control (plus ncvm's detail, if any)
+  SourceLoc loc;
+  std::optional<int64_t> n;  // N number of the block, if it had one
+  int32_t program = -1;      // O number, -1 if unknown
+};
+
+// Thrown inside the control and caught at the run loop; alarms are rare, so exceptions cost
+// nothing on the normal path.
+class AlarmError : public std::runtime_error {
+ public:
+  AlarmError(AlarmId id, std::string detail = {});
+  AlarmError(std::string code, std::string text);  // macro alarm (#3000)
+  const std::string& code() const { return code_; }
+  const std::string& text() const { return text_; }
+  // Location inside the block (column), 0 = use the block's start.
+  uint32_t col = 0;
+  // Set when the alarm belongs to another block than the one executing (structural errors
+  // found before running, syntax errors stored at compile time).
+  bool hasLoc = false;
+  SourceLoc loc;
+  int64_t n = -1;
+
+ private:
+  std::string code_;
+  std::string text_;
+};
+
+}  // namespace ncvm

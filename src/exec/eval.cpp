@@ -1,0 +1,212 @@
+// Expression bytecode evaluation and the Macro B functions (fanuc-reference B.2-B.4).
+#include <cmath>
+#include <numbers>
+
+#include "exec/executor.hpp"
+
+namespace ncvm {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Stack slots: five bracket levels bound the depth of any legal expression well below this.
+constexpr int kStack = 64;
+
+double checked(double v) {
+  if (!std::isfinite(v)) throw AlarmError(AlarmId::FloatOverflow);
+  return v;
+}
+
+int64_t toInteger(double v) {
+  if (!std::isfinite(v) || std::fabs(v) > 9.0e15) throw AlarmError(AlarmId::IntegerOverflow);
+  return std::llround(v);
+}
+
+// SIN and COS are exact at multiples of 90 degrees, as on the control (COS[90] is 0, so
+// TAN[90] divides by zero).
+double sinDeg(double d) {
+  double r = std::fmod(d, 360.0);
+  if (r < 0) r += 360.0;
+  if (r == 0 || r == 180) return 0.0;
+  if (r == 90) return 1.0;
+  if (r == 270) return -1.0;
+  return std::sin(d * kDeg);
+}
+double cosDeg(double d) { return sinDeg(d + 90.0); }
+
+double bcdToBinary(double x) {
+  int64_t v = toInteger(x);
+  if (v < 0) throw AlarmError(AlarmId::ArgumentOutOfRange, "BIN of a negative value");
+  int64_t out = 0, mul = 1;
+  while (v) {
+    int64_t digit = v & 0xF;
+    if (digit > 9) throw AlarmError(AlarmId::ArgumentOutOfRange, "BIN of a value that is not BCD");
+    out += digit * mul;
+    mul *= 10;
+    v >>= 4;
+  }
+  return static_cast<double>(out);
+}
+
+double binaryToBcd(double x) {
+  int64_t v = toInteger(x);
+  if (v < 0 || v > 99999999) throw AlarmError(AlarmId::ArgumentOutOfRange, "BCD of a value out of 0-99999999");
+  int64_t out = 0;
+  int shift = 0;
+  while (v) {
+    out |= (v % 10) << shift;
+    v /= 10;
+    shift += 4;
+  }
+  return static_cast<double>(out);
+}
+
+}  // namespace
+
+double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
+  bool nat = setup_.nat();
+  switch (fn) {
+    case Fn::Sin: return sinDeg(a);
+    case Fn::Cos: return cosDeg(a);
+    case Fn::Tan: {
+      double c = cosDeg(a);
+      if (c == 0.0) throw AlarmError(AlarmId::ZeroDivide, "TAN of 90 degrees");
+      return checked(sinDeg(a) / c);
+    }
+    case Fn::Asin: {
+      if (a < -1.0 || a > 1.0) throw AlarmError(AlarmId::ArgumentOutOfRange, "ASIN beyond 1");
+      double r = std::asin(a) / kDeg;
+      return (!nat && r < 0) ? r + 360.0 : r;  // NAT=0: 270..90
+    }
+    case Fn::Acos:
+      if (a < -1.0 || a > 1.0) throw AlarmError(AlarmId::ArgumentOutOfRange, "ACOS beyond 1");
+      return std::acos(a) / kDeg;
+    case Fn::Atan: {
+      double r = std::atan(a) / kDeg;
+      return (!nat && r < 0) ? r + 360.0 : r;
+    }
+    case Fn::Atan2: {
+      if (a == 0 && b == 0) throw AlarmError(AlarmId::ArgumentOutOfRange, "ATAN[0]/[0]");
+      double r = std::atan2(a, b) / kDeg;
+      return (!nat && r < 0) ? r + 360.0 : r;  // NAT=0: 0..360
+    }
+    case Fn::Sqrt:
+      if (a < 0) throw AlarmError(AlarmId::ArgumentOutOfRange, "SQRT of a negative value");
+      return std::sqrt(a);
+    case Fn::Abs: return std::fabs(a);
+    case Fn::Bin: return bcdToBinary(a);
+    case Fn::Bcd: return binaryToBcd(a);
+    case Fn::Round: return std::round(a);  // halves away from zero
+    case Fn::Fix: return std::trunc(a);
+    case Fn::Fup: return a >= 0 ? std::ceil(a) : std::floor(a);
+    case Fn::Ln:
+      if (a <= 0) throw AlarmError(AlarmId::ArgumentOutOfRange, "LN of zero or a negative value");
+      return std::log(a);
+    case Fn::Exp: return checked(std::exp(a));
+    case Fn::Pow: {
+      if (a == 0 && b < 0) throw AlarmError(AlarmId::ZeroDivide, "POW of zero to a negative power");
+      if (a < 0 && b != std::trunc(b))
+        throw AlarmError(AlarmId::ArgumentOutOfRange, "POW of a negative value to a fractional power");
+      return checked(std::pow(a, b));
+    }
+    case Fn::Adp: {
+      // ADP[#n]: undo the least-increment scaling of an argument written without a point.
+      if (arg < 1 || arg > 33) return a;
+      double scale = noPointScale_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(arg - 1)];
+      return scale > 0 ? a * scale : a;
+    }
+  }
+  return a;
+}
+
+Value Executor::eval(int32_t expr) {
+  const Program& p = *frames_.back().prog;
+  const ExprRange r = p.exprs[static_cast<size_t>(expr)];
+  const Instr* code = p.code.data();
+  // Hot path: a plain variable or constant needs no stack.
+  if (r.end - r.begin == 1) {
+    const Instr& in = code[r.begin];
+    if (in.op == Op::Const) return Value::num(p.consts[static_cast<size_t>(in.arg)]);
+    if (in.op == Op::Var) return readVar(in.arg);
+  }
+  Value st[kStack];
+  int sp = 0;
+  for (uint32_t k = r.begin; k < r.end; ++k) {
+    const Instr& in = code[k];
+    try {
+      switch (in.op) {
+        case Op::Const:
+          if (sp >= kStack) throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
+          st[sp++] = Value::num(p.consts[static_cast<size_t>(in.arg)]);
+          break;
+        case Op::Var:
+          if (sp >= kStack) throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
+          st[sp++] = readVar(in.arg);
+          break;
+        case Op::VarInd: {
+          double n = st[sp - 1].asNumber();
+          if (!std::isfinite(n) || std::fabs(n) > 1e9) throw AlarmError(AlarmId::VariableOutOfRange);
+          st[sp - 1] = readVar(std::llround(n));
+          break;
+        }
+        case Op::Neg:
+          st[sp - 1] = Value::num(-st[sp - 1].asNumber());
+          break;
+        case Op::Fn1:
+          st[sp - 1] = Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), 0, in.arg)));
+          break;
+        case Op::Fn2:
+          --sp;
+          st[sp - 1] = Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), st[sp].asNumber(), in.arg)));
+          break;
+        case Op::Eq:
+        case Op::Ne: {
+          // Only EQ and NE tell vacant from zero.
+          --sp;
+          const Value a = st[sp - 1], b = st[sp];
+          bool eq = (a.null || b.null) ? (a.null && b.null) : a.v == b.v;
+          st[sp - 1] = Value::num((in.op == Op::Eq) == eq ? 1.0 : 0.0);
+          break;
+        }
+        default: {
+          --sp;
+          double a = st[sp - 1].asNumber(), b = st[sp].asNumber();
+          double v = 0;
+          switch (in.op) {
+            case Op::Add: v = a + b; break;
+            case Op::Sub: v = a - b; break;
+            case Op::Mul: v = a * b; break;
+            case Op::Div:
+              if (b == 0) throw AlarmError(AlarmId::ZeroDivide);
+              v = a / b;
+              break;
+            case Op::Mod:
+              if (b == 0) throw AlarmError(AlarmId::ZeroDivide, "MOD by zero");
+              v = std::fmod(a, b);
+              break;
+            case Op::And: v = static_cast<double>(toInteger(a) & toInteger(b)); break;
+            case Op::Or: v = static_cast<double>(toInteger(a) | toInteger(b)); break;
+            case Op::Xor: v = static_cast<double>(toInteger(a) ^ toInteger(b)); break;
+            case Op::LAnd: v = (a != 0 && b != 0) ? 1 : 0; break;
+            case Op::LOr: v = (a != 0 || b != 0) ? 1 : 0; break;
+            case Op::LXor: v = ((a != 0) != (b != 0)) ? 1 : 0; break;
+            case Op::Gt: v = a > b; break;
+            case Op::Ge: v = a >= b; break;
+            case Op::Lt: v = a < b; break;
+            case Op::Le: v = a <= b; break;
+            default: break;
+          }
+          st[sp - 1] = Value::num(checked(v));
+        }
+      }
+    } catch (AlarmError& e) {
+      if (!e.col && !e.hasLoc) e.col = in.col;
+      throw;
+    }
+  }
+  return st[sp - 1];
+}
+
+bool Executor::evalCond(int32_t expr) { return eval(expr).asNumber() != 0.0; }
+
+}  // namespace ncvm

@@ -1,0 +1,323 @@
+#include "exec/executor.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncvm {
+
+const char* endReasonName(EndReason r) {
+  switch (r) {
+    case EndReason::M30: return "M30";
+    case EndReason::M02: return "M02";
+    case EndReason::M99: return "M99";
+    case EndReason::Alarm: return "alarm";
+    case EndReason::Eof: return "eof";
+    case EndReason::Limit: return "limit";
+  }
+  return "eof";
+}
+
+Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
+    : setup_(setup), store_(store), sink_(sink), series_(setup.series()),
+      lathe_(setup.kind == MachineKind::Lathe), dpi_(setup.dpi()) {
+  for (const auto& g : gcodeTable())
+    if ((g.seriesMask & seriesBit(series_)) && g.code10 >= 0 && g.code10 < 1000) gInfo_[static_cast<size_t>(g.code10)] = &g;
+  for (int k = 0; k < kMaxAxes; ++k) {
+    bool rot = setup.axes[static_cast<size_t>(k)].rotary;
+    nmPerIncMm_[static_cast<size_t>(k)] = nmPerIncrement(setup.increment, InputUnit::Mm, rot);
+    nmPerIncInch_[static_cast<size_t>(k)] = nmPerIncrement(setup.increment, InputUnit::Inch, rot);
+  }
+  frames_.reserve(32);
+  modalCalls_.reserve(8);
+  // Power-on modal state.
+  modal_.unit = setup.initialUnit;
+  auto set = [&](int code10) {
+    if (const GCodeInfo* g = gInfo_[static_cast<size_t>(code10)]) modal_.g[g->group] = static_cast<int16_t>(code10);
+  };
+  for (int c : {0, 400, 490, 500, 501, 540, 640, 670, 690, 800, 970, 150, 230, 131}) set(c);
+  set(lathe_ ? 180 : 170);
+  set(modal_.unit == InputUnit::Inch ? (series_ == Series::TC ? 700 : 200)
+                                     : (series_ == Series::TC ? 710 : 210));
+  if (series_ == Series::M || series_ == Series::TB || series_ == Series::TC) set(900);
+  if (series_ == Series::M) set(940), set(980);
+  if (series_ == Series::TA) set(990);  // lathes power on in feed per revolution
+  if (series_ == Series::TB || series_ == Series::TC) set(950), set(980);
+  deriveModal();
+  for (int k = 0; k < kMaxAxes; ++k) {
+    const AxisConfig& a = setup.axes[static_cast<size_t>(k)];
+    if (!a.present) continue;
+    machine_[static_cast<size_t>(k)] = lengthNm(a.initial, true, k) / (a.diameter ? 2 : 1);
+  }
+  programmed_ = machine_;
+  for (const auto& [n, v] : setup.initialVars) writeVar(n, Value::num(v));
+}
+
+Executor::~Executor() = default;
+
+void Executor::warn(const char* code, std::string text) {
+  SourceLoc loc = block_ ? block_->loc : SourceLoc{};
+  warnings_.push_back(Warning{code, std::move(text), loc});
+}
+
+const Program* Executor::findProgram(int32_t number, int32_t nameIdx) {
+  const Program* p = nullptr;
+  if (nameIdx >= 0) {
+    const std::string& name = frames_.back().prog->strings[static_cast<size_t>(nameIdx)];
+    p = store_.byName(name);
+    if (!p) throw AlarmError(AlarmId::ProgramNotFound, "<" + name + ">");
+  } else {
+    p = store_.byNumber(number);
+    if (!p) throw AlarmError(AlarmId::ProgramNotFound, fmt::format("O{:04d}", number));
+  }
+  return p;
+}
+
+void Executor::enter(const Program* p, FrameKind kind, int repeats, bool codeCalled) {
+  if (!p->structural.empty()) {
+    // Loop and label errors are known before the program runs (issue: before any motion).
+    const Alarm& a = p->structural.front();
+    AlarmError e(a.code, a.text);
+    e.hasLoc = true;
+    e.loc = a.loc;
+    e.n = a.n.value_or(-1);
+    throw e;
+  }
+  Frame f;
+  f.prog = p;
+  f.kind = kind;
+  f.repeatsLeft = repeats - 1;
+  f.codeCalled = codeCalled;
+  if (!frames_.empty()) {
+    f.level = frames_.back().level;
+    f.modalFloor = frames_.back().modalFloor;
+  }
+  frames_.push_back(f);
+}
+
+void Executor::callSub(const Program* p, int repeats, bool codeCalled) {
+  if (subDepth_ + 1 > setup_.limits.subprogramNesting ||
+      subDepth_ + macroDepth_ + 1 > setup_.limits.totalNesting)
+    throw AlarmError(AlarmId::TooManySubNesting,
+                     fmt::format("more than {} subprogram levels", setup_.limits.subprogramNesting));
+  enter(p, FrameKind::Sub, repeats, codeCalled);
+  ++subDepth_;
+}
+
+void Executor::callMacro(const Program* p, int repeats, const std::array<Value, 33>& args,
+                         const std::array<double, 33>& scale, FrameKind kind, bool codeCalled) {
+  if (macroDepth_ + 1 > setup_.limits.macroNesting)
+    throw AlarmError(AlarmId::TooManyMacroNesting,
+                     fmt::format("more than {} macro levels", setup_.limits.macroNesting));
+  if (subDepth_ + macroDepth_ + 1 > setup_.limits.totalNesting)
+    throw AlarmError(AlarmId::TooManySubNesting, "more than " + std::to_string(setup_.limits.totalNesting) + " call levels");
+  int16_t floor = frames_.back().modalFloor;
+  enter(p, kind, repeats, codeCalled);
+  ++macroDepth_;
+  int8_t level = static_cast<int8_t>(macroDepth_);
+  Frame& f = frames_.back();
+  f.level = level;
+  if (kind == FrameKind::ModalMacro) f.modalFloor = static_cast<int16_t>(modalCalls_.size());
+  else f.modalFloor = floor;
+  auto L = static_cast<size_t>(level);
+  locals_[L] = args;
+  noPointScale_[L] = scale;
+  callArgs_[L] = args;
+  callArgScale_[L] = scale;
+}
+
+void Executor::doReturn(int32_t label) {
+  Frame& f = frames_.back();
+  if (f.kind == FrameKind::Main) {
+    // M99 in a main program starts it again (or jumps to N label); only the block and time
+    // limits end such a loop.
+    if (label >= 0) {
+      int32_t t = f.prog->findLabel(label, 0);
+      if (t < 0) throw AlarmError(AlarmId::SequenceNotFound, "N" + std::to_string(label));
+      f.pc = static_cast<uint32_t>(t);
+    } else {
+      f.pc = 0;
+    }
+    return;
+  }
+  if (f.repeatsLeft > 0 && label < 0) {
+    --f.repeatsLeft;
+    f.pc = 0;
+    if (f.kind != FrameKind::Sub) {
+      auto L = static_cast<size_t>(f.level);
+      locals_[L] = callArgs_[L];
+      noPointScale_[L] = callArgScale_[L];
+    }
+    return;
+  }
+  if (f.kind == FrameKind::Sub) --subDepth_;
+  else --macroDepth_;
+  frames_.pop_back();
+  if (label >= 0) {
+    Frame& caller = frames_.back();
+    int32_t t = caller.prog->findLabel(label, caller.pc);
+    if (t < 0) throw AlarmError(AlarmId::SequenceNotFound, "N" + std::to_string(label));
+    caller.pc = static_cast<uint32_t>(t);
+  }
+}
+
+void Executor::jumpTo(int32_t label, bool computed) {
+  Frame& f = frames_.back();
+  const Block& b = *block_;
+  int32_t t = -1;
+  if (!computed) {
+    t = b.target;
+  } else {
+    if (label < 1 || label > 99999999)
+      throw AlarmError(AlarmId::IllegalMacroSequence, std::to_string(label));
+    t = f.prog->findLabel(label, f.pc);
+    if (t < 0) throw AlarmError(AlarmId::IllegalMacroSequence, "N" + std::to_string(label) + " not found");
+    // A jump into a loop the GOTO is not inside is illegal.
+    for (int32_t l = f.prog->blocks[static_cast<size_t>(t)].loopParent; l >= 0;
+         l = f.prog->blocks[static_cast<size_t>(l)].loopParent) {
+      bool inside = false;
+      for (int32_t s = b.loopParent; s >= 0; s = f.prog->blocks[static_cast<size_t>(s)].loopParent)
+        inside |= s == l;
+      if (!inside) throw AlarmError(AlarmId::IllegalLoopNumber, "GOTO jumps into a loop");
+    }
+  }
+  f.pc = static_cast<uint32_t>(t);
+}
+
+EndReason Executor::run(const Program& main) {
+  try {
+    enter(&main, FrameKind::Main, 1, false);
+    while (step()) {
+    }
+  } catch (const AlarmError& e) {
+    Alarm a;
+    a.code = e.code();
+    a.text = e.text();
+    if (e.hasLoc) {
+      a.loc = e.loc;
+      if (e.n >= 0) a.n = e.n;
+    } else if (block_) {
+      a.loc = block_->loc;
+      if (e.col) a.loc.col = e.col;
+      if (block_->n >= 0) a.n = block_->n;
+    }
+    a.program = frames_.empty() ? main.number : frames_.back().prog->number;
+    alarm_ = a;
+    EventOrigin at = origin_;
+    at.file = a.loc.file;
+    at.line = a.loc.line;
+    at.n = a.n ? static_cast<int32_t>(*a.n) : -1;
+    if (!at.programName) at.programName = &main.name;
+    sink_.onAlarm(AlarmEvent{at, a.code, a.text});
+    endReason_ = (a.code == alarmCode(AlarmId::BlockLimit) || a.code == alarmCode(AlarmId::TimeLimit))
+                     ? EndReason::Limit
+                     : EndReason::Alarm;
+  }
+  return endReason_;
+}
+
+// Executes one block. Returns false when the program has ended.
+bool Executor::step() {
+  Frame& f = frames_.back();
+  const Program& prog = *f.prog;
+  if (f.pc >= prog.blocks.size()) {
+    if (f.kind == FrameKind::Main) {
+      endReason_ = EndReason::Eof;
+      return false;
+    }
+    // A subprogram without M99: return as if it had one.
+    warn("W003", fmt::format("{} ends without M99", prog.displayName()));
+    doReturn(-1);
+    return true;
+  }
+  const Block& b = prog.blocks[f.pc];
+  block_ = &b;
+  if (++stats_.blocks > setup_.limits.maxBlocks)
+    throw AlarmError(AlarmId::BlockLimit, fmt::format("limits.max_blocks = {}", setup_.limits.maxBlocks));
+  if (b.skipLevel && setup_.blockSkip[b.skipLevel]) {
+    ++f.pc;
+    return true;
+  }
+  origin_.file = b.loc.file;
+  origin_.line = b.loc.line;
+  origin_.n = b.n;
+  origin_.programName = &prog.label;
+  switch (b.kind) {
+    case BlockKind::Empty:
+      ++f.pc;
+      break;
+    case BlockKind::Error: {
+      const Alarm& a = prog.errors[static_cast<size_t>(b.error)];
+      AlarmError e(a.code, a.text);
+      e.hasLoc = true;
+      e.loc = a.loc;
+      e.n = a.n.value_or(-1);
+      throw e;
+    }
+    case BlockKind::Assign: {
+      Value v = eval(b.rhs);
+      int64_t n = b.lhsVar;
+      if (b.lhsExpr >= 0) n = std::llround(eval(b.lhsExpr).asNumber());
+      ++f.pc;
+      writeVar(n, v);
+      break;
+    }
+    case BlockKind::If:
+      if (!evalCond(b.cond)) {
+        ++f.pc;
+      } else if (b.thenAssign) {
+        Value v = eval(b.rhs);
+        int64_t n = b.lhsVar;
+        if (b.lhsExpr >= 0) n = std::llround(eval(b.lhsExpr).asNumber());
+        ++f.pc;
+        writeVar(n, v);
+      } else {
+        jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(std::llround(eval(b.gotoExpr).asNumber())) : b.gotoLabel,
+               b.gotoExpr >= 0);
+      }
+      break;
+    case BlockKind::Goto:
+      jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(std::llround(eval(b.gotoExpr).asNumber())) : b.gotoLabel,
+             b.gotoExpr >= 0);
+      break;
+    case BlockKind::While:
+      if (b.cond < 0 || evalCond(b.cond)) ++f.pc;
+      else f.pc = static_cast<uint32_t>(b.target);
+      break;
+    case BlockKind::End:
+      f.pc = static_cast<uint32_t>(b.target);
+      break;
+    case BlockKind::Print:
+      print(b);
+      ++f.pc;
+      break;
+    case BlockKind::Popen:
+    case BlockKind::Pclos:
+      ++f.pc;  // the output "device" is the DPRNT file, always open
+      break;
+    case BlockKind::Nc:
+      execNc(b);
+      break;
+  }
+  if (simTime_ > setup_.limits.maxTimeSeconds)
+    throw AlarmError(AlarmId::TimeLimit, fmt::format("limits.max_time_s = {}", setup_.limits.maxTimeSeconds));
+  return !ended_;
+}
+
+void Executor::advanceTime(double seconds) {
+  simTime_ += seconds;
+  stats_.time += seconds;
+}
+
+std::vector<std::pair<int, double>> Executor::userVariables() const {
+  std::vector<std::pair<int, double>> out;
+  for (int k = 0; k < 33; ++k)
+    if (!locals_[0][static_cast<size_t>(k)].null) out.emplace_back(k + 1, locals_[0][static_cast<size_t>(k)].v);
+  for (int k = 0; k < 100; ++k)
+    if (!common100_[static_cast<size_t>(k)].null) out.emplace_back(100 + k, common100_[static_cast<size_t>(k)].v);
+  for (int k = 0; k < 500; ++k)
+    if (!common500_[static_cast<size_t>(k)].null) out.emplace_back(500 + k, common500_[static_cast<size_t>(k)].v);
+  return out;
+}
+
+}  // namespace ncvm

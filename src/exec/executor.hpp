@@ -1,0 +1,213 @@
+#pragma once
+// The control: runs compiled programs block by block in Fanuc order and emits canonical
+// events. Jobs are split by file: executor.cpp (run loop, flow, calls), eval.cpp
+// (expressions), variables.cpp (#variables incl. system ones), nc_block.cpp (words, modal
+// state, M/S/T), motion.cpp (positions and moves), print.cpp (DPRNT/BPRNT).
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "canon/events.hpp"
+#include "core/alarm.hpp"
+#include "core/value.hpp"
+#include "exec/gcode_table.hpp"
+#include "lang/ir.hpp"
+#include "lang/program_store.hpp"
+#include "machine/setup.hpp"
+
+namespace ncvm {
+
+struct Words;
+
+enum class EndReason : uint8_t { M30, M02, M99, Alarm, Eof, Limit };
+const char* endReasonName(EndReason r);
+
+struct Warning {
+  std::string code;  // "W001"
+  std::string text;
+  SourceLoc loc;
+};
+
+struct RunStats {
+  uint64_t blocks = 0;
+  uint64_t moves = 0;
+  double rapidLength = 0, feedLength = 0;  // program units
+  double time = 0;                         // seconds, simple model
+};
+
+// The modal groups are indexed by the group number of #4000+g.
+constexpr int kGroups = 32;
+
+struct ModalState {
+  std::array<int16_t, kGroups> g{};  // G code x10 per group
+  double feed = 0;                   // F as programmed
+  double speed = 0;                  // S as programmed (rpm or CSS)
+  int32_t tool = 0;                  // T
+  int32_t dOffset = 0, hOffset = 0;  // D, H
+  double e = 0, b = 0;
+  int32_t lastM = 0;
+  int32_t workP = 0;                 // P of G54.1
+  InputUnit unit = InputUnit::Mm;
+  // Derived from g[] for the hot path.
+  int motion = 10;  // 0, 10, 20, 30 (x10)
+  int plane = 17;
+  bool incremental = false;
+  bool feedPerRev = false;
+  bool css = false;
+};
+
+class Executor {
+ public:
+  Executor(const Setup& setup, ProgramStore& store, EventSink& sink);
+  ~Executor();
+
+  // Runs `main` to its end. Alarms end the run; they are returned, not thrown.
+  EndReason run(const Program& main);
+
+  // Everything a report needs after the run.
+  const std::optional<Alarm>& alarm() const { return alarm_; }
+  const RunStats& stats() const { return stats_; }
+  const ModalState& modal() const { return modal_; }
+  const std::vector<Warning>& warnings() const { return warnings_; }
+  const Setup& setup() const { return setup_; }
+  AxisArray workPosition() const;     // program units, lathe X as diameter
+  AxisArray machinePosition() const;  // program units
+  // Non-vacant level-0 locals and common variables, for the state file.
+  std::vector<std::pair<int, double>> userVariables() const;
+  // What DPRNT/BPRNT wrote; the caller saves it (atomically) where the setup says.
+  const std::string& printed() const { return printed_; }
+
+ private:
+  friend struct ExecutorAccess;  // unit tests
+  // ---- configuration ----
+  const Setup& setup_;
+  ProgramStore& store_;
+  EventSink& sink_;
+  Series series_;
+  bool lathe_;
+  bool dpi_;
+  std::array<const GCodeInfo*, 1000> gInfo_{};  // by G code x10
+  std::array<int64_t, kMaxAxes> nmPerIncMm_{}, nmPerIncInch_{};
+
+  // ---- call stack ----
+  enum class FrameKind : uint8_t { Main, Sub, Macro, ModalMacro };
+  struct Frame {
+    const Program* prog = nullptr;
+    uint32_t pc = 0;
+    FrameKind kind = FrameKind::Main;
+    int32_t repeatsLeft = 0;
+    int8_t level = 0;        // local variable level
+    bool codeCalled = false; // entered through a G/M/T code call
+    int16_t modalFloor = 0;  // G66 entries at or above this index may trigger here
+  };
+  std::vector<Frame> frames_;
+  int macroDepth_ = 0, subDepth_ = 0;
+
+  // ---- variables ----
+  static constexpr int kMaxLevels = 16;
+  std::array<std::array<Value, 33>, kMaxLevels> locals_{};
+  // ADP: for locals set from an argument written without a decimal point, the factor that
+  // undoes the scaling (1000 for IS-B mm); 0 otherwise.
+  std::array<std::array<double, 33>, kMaxLevels> noPointScale_{};
+  std::array<std::array<Value, 33>, kMaxLevels> callArgs_{};  // for L repeats
+  std::array<std::array<double, 33>, kMaxLevels> callArgScale_{};
+  std::array<Value, 100> common100_{};
+  std::array<Value, 500> common500_{};
+  double timerMsOffset_ = 0, timerHourOffset_ = 0;
+  double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0, parts3901_ = 0, parts3902_ = 0;
+
+  // ---- modal calls (G66) ----
+  struct ModalCall {
+    const Program* prog = nullptr;
+    int32_t repeats = 1;
+    std::array<Value, 33> args{};
+    std::array<double, 33> scale{};
+  };
+  std::vector<ModalCall> modalCalls_;
+
+  // ---- machine state ----
+  ModalState modal_;
+  std::array<int64_t, kMaxAxes> machine_{};  // nm / micro-degree, physical (lathe X radius)
+  std::array<int64_t, kMaxAxes> offset_{};   // machine = work + offset_
+  std::array<int64_t, kMaxAxes> programmed_{};  // work position of the last block end (#5001)
+  std::array<int64_t, kMaxAxes> skip_{};
+  std::array<int64_t, kMaxAxes> g28Mid_{};
+  bool g28MidSet_ = false;
+  bool spindleOn_ = false;
+  double rpm_ = 0;
+  double spindleClamp_ = 0;  // G50/G92 S (lathe), 0 = none
+  bool warnedRevFeed_ = false;
+
+  // ---- run ----
+  const Block* block_ = nullptr;
+  std::optional<Alarm> alarm_;
+  RunStats stats_;
+  std::vector<Warning> warnings_;
+  double simTime_ = 0;
+  EventOrigin origin_;
+  std::string printed_;
+
+  // executor.cpp
+  void enter(const Program* p, FrameKind kind, int repeats, bool codeCalled);
+  bool step();  // one block; false when the run ends
+  void jumpTo(int32_t label, bool computed);
+  void doReturn(int32_t label);  // M99 [P]
+  void callSub(const Program* p, int repeats, bool codeCalled);
+  void callMacro(const Program* p, int repeats, const std::array<Value, 33>& args,
+                 const std::array<double, 33>& scale, FrameKind kind, bool codeCalled);
+  const Program* findProgram(int32_t number, int32_t nameIdx);
+  EndReason endReason_ = EndReason::Eof;
+  bool ended_ = false;
+  void warn(const char* code, std::string text);
+
+  // eval.cpp
+  Value eval(int32_t expr);
+  bool evalCond(int32_t expr);
+  double callFn(Fn fn, double a, double b, int32_t arg);
+
+  // variables.cpp
+ public:
+  Value readVar(int64_t n);
+  void writeVar(int64_t n, Value v);
+
+ private:
+  Value readSystem(int64_t n);
+  void writeSystem(int64_t n, Value v);
+  int axisByNumber(int n) const;  // 1-based controlled axis -> slot, -1 if none
+
+  // nc_block.cpp
+  void execNc(const Block& b);
+  void gatherWords(const Block& b, Words& w);
+  bool codeCall(const Block& b, Words& w);
+  void macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
+                          bool codeCalled);
+  void applyModalG(int code10, const GCodeInfo& info);
+  void deriveModal();
+  void auxFunctions(Words& w);
+  void programControl(Words& w, bool moved);
+
+  // motion.cpp
+  int64_t lengthNm(double v, bool point, int slot) const;
+  double toProgramUnits(int64_t nm, int slot, bool diameter) const;
+  bool axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask);
+  void moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t axesMask);
+  void arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw);
+  void rapidMachine(const std::array<int64_t, kMaxAxes>& targetMachine, uint32_t axesMask);
+  void emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
+                const std::array<int64_t, kMaxAxes>& toMachine);
+  double effectiveFeed();
+  void dwell(const Words& w);
+  void referenceReturn(const Words& w, int which);
+  void returnFromReference(const Words& w);
+  void machinePositioning(const Words& w);
+  void advanceTime(double seconds);
+
+  // print.cpp
+  void print(const Block& b);
+};
+
+}  // namespace ncvm

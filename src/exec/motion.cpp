@@ -1,0 +1,384 @@
+// Positions and moves: rounding to the least increment, rapids (linear or dog-leg per
+// 1401#1), linear and circular interpolation with the radius check, dwell, reference
+// returns and machine-coordinate positioning.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "exec/executor.hpp"
+#include "exec/words.hpp"
+
+namespace ncvm {
+
+namespace {
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+}
+
+int64_t Executor::lengthNm(double v, bool point, int slot) const {
+  auto s = static_cast<size_t>(slot < 0 ? 0 : slot);
+  bool rotary = setup_.axes[s].rotary;
+  InputUnit u = rotary ? InputUnit::Mm : modal_.unit;
+  int64_t perUnit = incrementsPerUnit(setup_.increment, u);
+  int64_t nmPer = u == InputUnit::Inch ? nmPerIncInch_[s] : nmPerIncMm_[s];
+  // Without a decimal point (and without calculator-type input) a value counts increments.
+  int64_t inc = (!point && !dpi_) ? static_cast<int64_t>(std::llround(v)) : roundToIncrements(v, perUnit);
+  return inc * nmPer;
+}
+
+double Executor::toProgramUnits(int64_t nm, int slot, bool diameter) const {
+  const AxisConfig& a = setup_.axes[static_cast<size_t>(slot)];
+  double per = a.rotary ? 1e6 : (modal_.unit == InputUnit::Inch ? static_cast<double>(kNmPerInch)
+                                                                   : static_cast<double>(kNmPerMm));
+  double v = static_cast<double>(nm) / per;
+  return (diameter && a.diameter) ? v * 2.0 : v;
+}
+
+AxisArray Executor::workPosition() const {
+  AxisArray out{};
+  for (int k = 0; k < kMaxAxes; ++k)
+    out[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)] - offset_[static_cast<size_t>(k)], k, true);
+  return out;
+}
+
+AxisArray Executor::machinePosition() const {
+  AxisArray out{};
+  for (int k = 0; k < kMaxAxes; ++k) out[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
+  return out;
+}
+
+// Target work position of the block's axis words. Returns false when no axis is named.
+bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& mask) {
+  for (size_t k = 0; k < kMaxAxes; ++k) target[k] = machine_[k] - offset_[k];
+  mask = 0;
+  static constexpr char kAbs[kMaxAxes] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
+  // Lathe system A: U V W H are the incremental forms of X Y Z C.
+  static constexpr char kInc[kMaxAxes] = {'U', 'V', 'W', 0, 0, 'H'};
+  for (int k = 0; k < kMaxAxes; ++k) {
+    auto s = static_cast<size_t>(k);
+    const AxisConfig& a = setup_.axes[s];
+    char absL = kAbs[k], incL = lathe_ ? kInc[k] : 0;
+    if (!a.present) {
+      bool named = w.has(absL) && (k >= 3 || lathe_);
+      if (!lathe_ && k < 3) named = false;
+      if (lathe_ && incL && w.has(incL) && k != 5) named = true;
+      if (named || (!lathe_ && w.has(absL) && k >= 3)) {
+        AlarmError e(AlarmId::ImproperAddress, fmt::format("{}: the machine has no such axis", w.has(absL) ? absL : incL));
+        e.col = w.col[static_cast<size_t>((w.has(absL) ? absL : incL) - 'A')];
+        throw e;
+      }
+      continue;
+    }
+    if (w.has(absL)) {
+      int64_t nm = lengthNm(w.value(absL), w.hasPoint(absL), k);
+      if (a.diameter) nm /= 2;
+      target[s] = modal_.incremental ? target[s] + nm : nm;
+      mask |= 1u << k;
+    }
+    if (incL && w.has(incL)) {
+      int64_t nm = lengthNm(w.value(incL), w.hasPoint(incL), k);
+      if (a.diameter) nm /= 2;
+      target[s] += nm;
+      mask |= 1u << k;
+    }
+  }
+  if (!lathe_) {
+    for (char c : {'U', 'V', 'W'}) {
+      if (w.has(c)) {
+        AlarmError e(AlarmId::ImproperAddress, fmt::format("{}: the machine has no such axis", c));
+        e.col = w.col[static_cast<size_t>(c - 'A')];
+        throw e;
+      }
+    }
+  }
+  return mask != 0;
+}
+
+double Executor::effectiveFeed() {
+  if (modal_.feed <= 0) throw AlarmError(AlarmId::FeedZero, "no F programmed");
+  if (!modal_.feedPerRev) return modal_.feed;
+  double rpm = rpm_;
+  if (modal_.css) {
+    // Constant surface speed: rpm from the current diameter, clamped by G50/G92 S.
+    double dia = std::fabs(toProgramUnits(machine_[0] - offset_[0], 0, true));
+    double perMin = modal_.unit == InputUnit::Inch ? 12.0 : 1000.0;
+    rpm = dia > 0 ? modal_.speed * perMin / (std::numbers::pi * dia) : spindleClamp_;
+    if (spindleClamp_ > 0) rpm = std::min(rpm, spindleClamp_);
+  }
+  if (rpm <= 0 && !warnedRevFeed_) {
+    warnedRevFeed_ = true;
+    warn("W004", "feed per revolution with no spindle speed: the machine would wait; time counted as 0");
+  }
+  return modal_.feed * rpm;
+}
+
+void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
+                        const std::array<int64_t, kMaxAxes>& toMachine) {
+  e.at = origin_;
+  for (int k = 0; k < kMaxAxes; ++k) {
+    auto s = static_cast<size_t>(k);
+    e.mstart[s] = toProgramUnits(fromMachine[s], k, true);
+    e.mend[s] = toProgramUnits(toMachine[s], k, true);
+    e.start[s] = toProgramUnits(fromMachine[s] - offset_[s], k, true);
+    e.end[s] = toProgramUnits(toMachine[s] - offset_[s], k, true);
+  }
+  ++stats_.moves;
+  if (e.mode == MoveMode::Rapid) stats_.rapidLength += e.length;
+  else stats_.feedLength += e.length;
+  advanceTime(e.time);
+  sink_.onMove(e);
+}
+
+void Executor::rapidMachine(const std::array<int64_t, kMaxAxes>& toM, uint32_t mask) {
+  (void)mask;
+  std::array<int64_t, kMaxAxes> fromM = machine_;
+  MoveEvent e;
+  e.mode = MoveMode::Rapid;
+  // Each axis needs |d| / rate; the move takes as long as the slowest axis, linear or not.
+  std::array<double, kMaxAxes> t{}, d{};
+  double sq = 0, time = 0;
+  for (int k = 0; k < kMaxAxes; ++k) {
+    auto s = static_cast<size_t>(k);
+    d[s] = toProgramUnits(toM[s] - fromM[s], k, false);
+    sq += d[s] * d[s];
+    double rate = setup_.axes[s].rapidRate;
+    t[s] = rate > 0 ? std::fabs(d[s]) / rate * 60.0 : 0.0;
+    time = std::max(time, t[s]);
+  }
+  e.time = time;
+  e.feed = time > 0 ? std::sqrt(sq) / time * 60.0 : 0.0;
+  if (!setup_.lrp()) {
+    // Dog-leg: every axis at its own rapid rate, so the path bends where an axis arrives.
+    std::array<double, kMaxAxes> stops = t;
+    std::sort(stops.begin(), stops.end());
+    double length = 0;
+    AxisArray prev{};
+    for (int k = 0; k < kMaxAxes; ++k) prev[static_cast<size_t>(k)] = 0;
+    for (double stop : stops) {
+      if (stop <= 0 || stop >= time) continue;
+      AxisArray at{};
+      double seg = 0;
+      for (int k = 0; k < kMaxAxes; ++k) {
+        auto s = static_cast<size_t>(k);
+        double frac = t[s] > 0 ? std::min(stop, t[s]) / t[s] : 1.0;
+        at[s] = d[s] * frac;
+        seg += (at[s] - prev[s]) * (at[s] - prev[s]);
+      }
+      if (e.pathPoints > 0 && seg == 0) continue;
+      length += std::sqrt(seg);
+      AxisArray point{};
+      for (int k = 0; k < kMaxAxes; ++k) {
+        auto s = static_cast<size_t>(k);
+        int64_t nm = fromM[s] + static_cast<int64_t>(std::llround(at[s] * (setup_.axes[s].rotary ? 1e6 : (modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6))));
+        point[s] = toProgramUnits(nm - offset_[s], k, true);
+      }
+      e.path[static_cast<size_t>(e.pathPoints++)] = point;
+      prev = at;
+    }
+    double seg = 0;
+    for (int k = 0; k < kMaxAxes; ++k) seg += (d[static_cast<size_t>(k)] - prev[static_cast<size_t>(k)]) * (d[static_cast<size_t>(k)] - prev[static_cast<size_t>(k)]);
+    e.length = length + std::sqrt(seg);
+  } else {
+    e.length = std::sqrt(sq);
+  }
+  emitMove(e, fromM, toM);
+  machine_ = toM;
+}
+
+void Executor::moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t mask) {
+  std::array<int64_t, kMaxAxes> toM;
+  for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = targetWork[k] + offset_[k];
+  programmed_ = targetWork;
+  if (mode == MoveMode::Rapid) {
+    rapidMachine(toM, mask);
+    return;
+  }
+  MoveEvent e;
+  e.mode = mode;
+  e.feed = effectiveFeed();
+  double sq = 0;
+  for (int k = 0; k < kMaxAxes; ++k) {
+    double d = toProgramUnits(toM[static_cast<size_t>(k)] - machine_[static_cast<size_t>(k)], k, false);
+    sq += d * d;
+  }
+  e.length = std::sqrt(sq);
+  e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+  std::array<int64_t, kMaxAxes> fromM = machine_;
+  emitMove(e, fromM, toM);
+  machine_ = toM;
+}
+
+void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw) {
+  // Plane axes (u, v), the normal axis n and the centre words of each plane; (u, v, n) is
+  // right-handed, so G02 is clockwise seen from +n in every plane.
+  int u = 0, v = 1, n = 2;
+  char cu = 'I', cv = 'J';
+  if (modal_.plane == 18) u = 2, v = 0, n = 1, cu = 'K', cv = 'I';
+  else if (modal_.plane == 19) u = 1, v = 2, n = 0, cu = 'J', cv = 'K';
+  auto U = static_cast<size_t>(u), V = static_cast<size_t>(v), N = static_cast<size_t>(n);
+  if (modal_.motion != 20 && modal_.motion != 30) return;
+  double feed = effectiveFeed();
+  std::array<int64_t, kMaxAxes> startW;
+  for (size_t k = 0; k < kMaxAxes; ++k) startW[k] = machine_[k] - offset_[k];
+  double su = static_cast<double>(startW[U]), sv = static_cast<double>(startW[V]);
+  double eu = static_cast<double>(targetWork[U]), ev = static_cast<double>(targetWork[V]);
+  double tolNm = setup_.arcTolerance() * 1e6;
+  double cu0 = su, cv0 = sv;
+  if (w.has('R')) {
+    double r = static_cast<double>(lengthNm(w.value('R'), w.hasPoint('R'), u));
+    double du = eu - su, dv = ev - sv;
+    double d = std::hypot(du, dv);
+    if (d == 0) {
+      // An R arc that ends where it starts is a zero-length arc (no movement in the plane).
+      std::array<int64_t, kMaxAxes> t = targetWork;
+      if (t != startW) moveTo(t, MoveMode::Linear, 0);
+      return;
+    }
+    double h2 = r * r - d * d / 4.0;
+    if (h2 < 0) {
+      if (d / 2.0 - std::fabs(r) > tolNm)
+        throw AlarmError(AlarmId::OverToleranceOfRadius, "R smaller than half the chord");
+      h2 = 0;
+    }
+    double h = std::sqrt(h2);
+    double pu = -dv / d, pv = du / d;  // left of the chord
+    double side = (cw ? -1.0 : 1.0) * (r < 0 ? -1.0 : 1.0);
+    cu0 = (su + eu) / 2.0 + side * h * pu;
+    cv0 = (sv + ev) / 2.0 + side * h * pv;
+  } else {
+    if (!w.has(cu) && !w.has(cv)) throw AlarmError(AlarmId::NoRadiusOrCenter);
+    // I, J, K are incremental from the start point and always radius values.
+    auto centerNm = [&](char c, int axis) {
+      return w.has(c) ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), axis)) : 0.0;
+    };
+    cu0 = su + centerNm(cu, u);
+    cv0 = sv + centerNm(cv, v);
+    double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
+    if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
+    if (std::fabs(re - rs) > tolNm)
+      throw AlarmError(AlarmId::OverToleranceOfRadius,
+                       fmt::format("end radius differs by {:.4f} mm", std::fabs(re - rs) / 1e6));
+  }
+  double r = std::hypot(su - cu0, sv - cv0);
+  double as = std::atan2(sv - cv0, su - cu0), ae = std::atan2(ev - cv0, eu - cu0);
+  double sweep = cw ? as - ae : ae - as;
+  bool full = (eu == su && ev == sv);
+  while (sweep <= 0) sweep += kTwoPi;
+  while (sweep > kTwoPi) sweep -= kTwoPi;
+  if (full) sweep = kTwoPi;
+  // Length in program units: the arc and any linear (helical) axes together.
+  double unitNm = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
+  double arcLen = r * sweep / unitNm;
+  double lin = 0;
+  for (size_t k = 0; k < kMaxAxes; ++k) {
+    if (k == U || k == V) continue;
+    double dk = toProgramUnits(targetWork[k] - startW[k], static_cast<int>(k), false);
+    lin += dk * dk;
+  }
+  MoveEvent e;
+  e.mode = cw ? MoveMode::Cw : MoveMode::Ccw;
+  e.arc = true;
+  e.plane = modal_.plane;
+  e.feed = feed;
+  e.length = std::sqrt(arcLen * arcLen + lin);
+  e.time = feed > 0 ? e.length / feed * 60.0 : 0.0;
+  std::array<int64_t, kMaxAxes> centerW = startW;
+  centerW[U] = static_cast<int64_t>(std::llround(cu0));
+  centerW[V] = static_cast<int64_t>(std::llround(cv0));
+  centerW[N] = startW[N];
+  for (int k = 0; k < 3; ++k) e.center[static_cast<size_t>(k)] = toProgramUnits(centerW[static_cast<size_t>(k)], k, true);
+  std::array<int64_t, kMaxAxes> toM, fromM = machine_;
+  for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = targetWork[k] + offset_[k];
+  programmed_ = targetWork;
+  emitMove(e, fromM, toM);
+  machine_ = toM;
+}
+
+void Executor::dwell(const Words& w) {
+  double seconds = 0;
+  double revs = 0;
+  if (w.has('P')) {
+    seconds = static_cast<double>(std::llround(w.value('P'))) / 1000.0;
+  } else {
+    char L = w.has('X') ? 'X' : (lathe_ && w.has('U')) ? 'U' : 0;
+    if (!L) return;
+    double v = w.value(L);
+    // X without a decimal point counts least increments: G04 X1 is 0.001 s on IS-B.
+    seconds = (!w.hasPoint(L) && !dpi_) ? v * leastIncrement(setup_.increment, InputUnit::Mm) : v;
+  }
+  if (seconds < 0) throw AlarmError(AlarmId::IllegalMinus, "negative dwell");
+  DwellEvent e;
+  e.at = origin_;
+  if (modal_.feedPerRev && setup_.bit("3405#1")) {
+    // Parameter 3405#1: in feed per revolution the dwell is in spindle revolutions.
+    revs = seconds;
+    seconds = rpm_ > 0 ? revs * 60.0 / rpm_ : 0.0;
+    e.revolutions = revs;
+  }
+  e.time = seconds;
+  advanceTime(seconds);
+  sink_.onDwell(e);
+}
+
+void Executor::referenceReturn(const Words& w, int which) {
+  if (modal_.g[9] != 800 && !lathe_) throw AlarmError(AlarmId::G27to30InCycle);
+  if (which < 1 || which > 4) throw AlarmError(AlarmId::IllegalReferenceReturn, fmt::format("P{}", which));
+  std::array<int64_t, kMaxAxes> mid{};
+  uint32_t mask = 0;
+  axisTargets(w, mid, mask);
+  if (!mask) return;
+  g28Mid_ = mid;
+  g28MidSet_ = true;
+  std::array<int64_t, kMaxAxes> toM = machine_;
+  for (size_t k = 0; k < kMaxAxes; ++k)
+    if (mask & (1u << k)) toM[k] = mid[k] + offset_[k];
+  rapidMachine(toM, mask);
+  for (size_t k = 0; k < kMaxAxes; ++k) {
+    if (!(mask & (1u << k))) continue;
+    const AxisConfig& a = setup_.axes[k];
+    InputUnit u = modal_.unit;
+    double ref = a.reference[static_cast<size_t>(which - 1)];
+    int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, u)) *
+                 (u == InputUnit::Inch ? nmPerIncInch_[k] : nmPerIncMm_[k]);
+    toM[k] = a.diameter ? nm / 2 : nm;
+  }
+  rapidMachine(toM, mask);
+  for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+}
+
+void Executor::returnFromReference(const Words& w) {
+  std::array<int64_t, kMaxAxes> target{};
+  uint32_t mask = 0;
+  axisTargets(w, target, mask);
+  if (!mask) return;
+  std::array<int64_t, kMaxAxes> toM = machine_;
+  if (g28MidSet_) {
+    for (size_t k = 0; k < kMaxAxes; ++k)
+      if (mask & (1u << k)) toM[k] = g28Mid_[k] + offset_[k];
+    rapidMachine(toM, mask);
+  }
+  for (size_t k = 0; k < kMaxAxes; ++k)
+    if (mask & (1u << k)) toM[k] = target[k] + offset_[k];
+  rapidMachine(toM, mask);
+  programmed_ = target;
+}
+
+void Executor::machinePositioning(const Words& w) {
+  // G53: machine coordinates, absolute even in G91, at rapid.
+  std::array<int64_t, kMaxAxes> toM = machine_;
+  uint32_t mask = 0;
+  static constexpr char kAbs[kMaxAxes] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
+  for (int k = 0; k < kMaxAxes; ++k) {
+    auto s = static_cast<size_t>(k);
+    if (!setup_.axes[s].present || !w.has(kAbs[k])) continue;
+    int64_t nm = lengthNm(w.value(kAbs[k]), w.hasPoint(kAbs[k]), k);
+    toM[s] = setup_.axes[s].diameter ? nm / 2 : nm;
+    mask |= 1u << k;
+  }
+  if (!mask) return;
+  rapidMachine(toM, mask);
+  for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+}
+
+}  // namespace ncvm

@@ -1,0 +1,441 @@
+// One NC block, in the control's order: gather and check every word first, then code
+// calls and G65/G66, modal G codes, F/S/T/H/D, auxiliary M functions, the one-shot or
+// modal motion, and last the program-control M codes (M00/M01/M02/M30/M98/M99).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "exec/executor.hpp"
+#include "exec/words.hpp"
+
+namespace ncvm {
+
+namespace {
+constexpr uint32_t bit(char letter) { return 1u << (letter - 'A'); }
+
+// Type I argument letters -> local variable (fanuc-reference B.7). 0 = not an argument.
+constexpr int kArgVar[26] = {
+    /*A*/ 1,  /*B*/ 2,  /*C*/ 3,  /*D*/ 7,  /*E*/ 8,  /*F*/ 9,  /*G*/ 0,  /*H*/ 11, /*I*/ 4,
+    /*J*/ 5,  /*K*/ 6,  /*L*/ 0,  /*M*/ 13, /*N*/ 0,  /*O*/ 0,  /*P*/ 0,  /*Q*/ 17, /*R*/ 18,
+    /*S*/ 19, /*T*/ 20, /*U*/ 21, /*V*/ 22, /*W*/ 23, /*X*/ 24, /*Y*/ 25, /*Z*/ 26};
+
+int32_t integerWord(const Words& w, char letter) {
+  double v = w.value(letter);
+  if (!std::isfinite(v) || std::fabs(v) > 99999999.0) throw AlarmError(AlarmId::IntegerOverflow, std::string(1, letter));
+  return static_cast<int32_t>(std::llround(v));
+}
+}  // namespace
+
+void Executor::gatherWords(const Block& b, Words& w) {
+  const Program& p = *frames_.back().prog;
+  const Word* words = p.words.data() + b.firstWord;
+  for (uint32_t k = 0; k < b.nWords; ++k) {
+    const Word& wd = words[k];
+    double v = wd.value;
+    bool point = wd.flags & kHasPoint;
+    switch (wd.kind) {
+      case WordKind::Literal:
+        break;
+      case WordKind::Var:
+      case WordKind::NegVar: {
+        Value x = readVar(wd.a);
+        if (x.null) continue;  // a vacant variable drops the whole word
+        v = wd.kind == WordKind::NegVar ? -x.v : x.v;
+        point = true;
+        break;
+      }
+      case WordKind::Expr: {
+        Value x = eval(wd.a);
+        if (x.null) continue;
+        v = x.v;
+        point = true;
+        break;
+      }
+    }
+    if (!std::isfinite(v) || std::fabs(v) > 1e12) {
+      AlarmError e(AlarmId::FloatOverflow, fmt::format("{} value out of range", wd.letter));
+      e.col = wd.col;
+      throw e;
+    }
+    char L = wd.letter;
+    if (L == '<') {
+      w.nameIdx = wd.a;
+      continue;
+    }
+    if (L == 'c' || L == 'r') {
+      AlarmError e(AlarmId::ImproperGCode, "chamfer/corner rounding ,C ,R: compensation issue, not supported yet");
+      e.col = wd.col;
+      throw e;
+    }
+    if (L == 'G') {
+      int code10 = static_cast<int>(std::llround(v * 10.0));
+      if (w.ng >= static_cast<int>(w.g.size()) || code10 < 0 || code10 >= 1000 || !gInfo_[static_cast<size_t>(code10)]) {
+        AlarmError e(AlarmId::ImproperGCode, fmt::format("G{}", v));
+        e.col = wd.col;
+        throw e;
+      }
+      w.g[static_cast<size_t>(w.ng)] = static_cast<int16_t>(code10);
+      w.gcol[static_cast<size_t>(w.ng++)] = wd.col;
+      continue;
+    }
+    if (L == 'M') {
+      if (w.nm >= static_cast<int>(w.m.size())) {
+        AlarmError e(AlarmId::ImproperAddress, "more than three M codes in a block");
+        e.col = wd.col;
+        throw e;
+      }
+      w.m[static_cast<size_t>(w.nm++)] = static_cast<int32_t>(std::llround(v));
+    }
+    int idx = L - 'A';
+    if (w.present & bit(L)) w.twice |= bit(L);
+    w.present |= bit(L);
+    w.val[static_cast<size_t>(idx)] = v;
+    if (point) w.point |= bit(L);
+    else w.point &= ~bit(L);
+    w.col[static_cast<size_t>(idx)] = wd.col;
+    if (L != 'G' && L != 'L' && L != 'N' && L != 'O' && L != 'P' && w.nArgs < static_cast<int>(w.args.size()))
+      w.args[static_cast<size_t>(w.nArgs++)] = Words::Arg{L, v, point};
+  }
+}
+
+void Executor::macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
+                                  bool codeCalled) {
+  std::array<Value, 33> args{};
+  std::array<double, 33> scale{};
+  // Argument specification I and II in one pass: I/J/K open a new set when the same or an
+  // earlier letter of I-J-K appears again; a later letter overrides an earlier one.
+  int set = 0, lastIjk = 3;
+  for (int k = 0; k < w.nArgs; ++k) {
+    const Words::Arg& a = w.args[static_cast<size_t>(k)];
+    int var = kArgVar[a.letter - 'A'];
+    if (a.letter == 'I' || a.letter == 'J' || a.letter == 'K') {
+      int idx = a.letter - 'I';
+      if (set == 0 || idx <= lastIjk) ++set;
+      lastIjk = idx;
+      if (set > 10) throw AlarmError(AlarmId::MacroStatementFormat, "more than 10 I/J/K sets");
+      var = 3 * set + 1 + idx;
+    }
+    if (var == 0) continue;
+    double v = a.value;
+    double undo = 0;
+    if (!a.point && !dpi_ && std::strchr("XYZIJKRQUVWABC", a.letter)) {
+      // An argument without a decimal point is a count of least increments.
+      bool angular = a.letter == 'A' || a.letter == 'B' || a.letter == 'C';
+      double lii = leastIncrement(setup_.increment, angular ? InputUnit::Mm : modal_.unit);
+      v = a.value * lii;
+      undo = 1.0 / lii;
+    }
+    args[static_cast<size_t>(var - 1)] = Value::num(v);
+    scale[static_cast<size_t>(var - 1)] = undo;
+  }
+  callMacro(p, repeats, args, scale, kind, codeCalled);
+}
+
+// G/M/T codes that call programs by parameter (fanuc-reference B.7). Returns true when the
+// block became a call.
+bool Executor::codeCall(const Block& b, Words& w) {
+  (void)b;
+  for (int k = 0; k < w.ng; ++k) {
+    int g = w.g[static_cast<size_t>(k)];
+    if (g % 10 != 0) continue;
+    int prog = setup_.gCodeCall(g / 10);
+    if (prog < 0) continue;
+    ++frames_.back().pc;
+    macroCallFromWords(findProgram(prog, -1), w.has('L') ? integerWord(w, 'L') : 1, w, FrameKind::Macro, true);
+    return true;
+  }
+  for (int k = 0; k < w.nm; ++k) {
+    int m = w.m[static_cast<size_t>(k)];
+    if (int prog = setup_.mCodeMacroCall(m); prog >= 0) {
+      ++frames_.back().pc;
+      macroCallFromWords(findProgram(prog, -1), 1, w, FrameKind::Macro, true);
+      return true;
+    }
+  }
+  return false;
+}
+
+void Executor::deriveModal() {
+  modal_.motion = modal_.g[1];
+  modal_.plane = lathe_ ? modal_.g[16] / 10 : modal_.g[2] / 10;
+  modal_.incremental = modal_.g[3] == 910;
+  if (series_ == Series::TA) modal_.feedPerRev = modal_.g[5] == 990;
+  else modal_.feedPerRev = modal_.g[5] == 950;
+  modal_.css = (lathe_ ? modal_.g[2] : modal_.g[13]) == 960;
+  int unitCode = modal_.g[6];
+  modal_.unit = (unitCode == 200 || unitCode == 700) ? InputUnit::Inch : InputUnit::Mm;
+}
+
+void Executor::execNc(const Block& b) {
+  Words w;
+  gatherWords(b, w);
+  Frame& f = frames_.back();
+
+  if (!f.codeCalled && codeCall(b, w)) return;
+
+  // Macro calls: G65 simple call, G66 modal call set-up, G67 cancel.
+  bool g65 = false, g66 = false, g67 = false;
+  for (int k = 0; k < w.ng; ++k) {
+    g65 |= w.g[static_cast<size_t>(k)] == 650;
+    g66 |= w.g[static_cast<size_t>(k)] == 660;
+    g67 |= w.g[static_cast<size_t>(k)] == 670;
+  }
+  if (g65 || g66) {
+    if (w.ng > 1) {
+      AlarmError e(AlarmId::GAsArgument);
+      e.col = w.gcol[1];
+      throw e;
+    }
+    if (!w.has('P') && w.nameIdx < 0) throw AlarmError(AlarmId::ProgramNotFound, "G65/G66 without P");
+    const Program* p = findProgram(w.has('P') ? integerWord(w, 'P') : -1, w.nameIdx);
+    int repeats = w.has('L') ? integerWord(w, 'L') : 1;
+    if (repeats < 0 || repeats > 9999) throw AlarmError(AlarmId::IntegerOverflow, "L");
+    ++f.pc;
+    if (g65) {
+      if (repeats == 0) return;
+      macroCallFromWords(p, repeats, w, FrameKind::Macro, false);
+    } else {
+      // Arguments are fixed now; the call happens after each later block that moves.
+      Words copy = w;
+      std::array<Value, 33> args{};
+      std::array<double, 33> scale{};
+      // Reuse the argument mapping by building it into a temporary frame-less table.
+      ModalCall mc;
+      mc.prog = p;
+      mc.repeats = repeats;
+      int set = 0, lastIjk = 3;
+      for (int k = 0; k < copy.nArgs; ++k) {
+        const Words::Arg& a = copy.args[static_cast<size_t>(k)];
+        int var = kArgVar[a.letter - 'A'];
+        if (a.letter == 'I' || a.letter == 'J' || a.letter == 'K') {
+          int idx = a.letter - 'I';
+          if (set == 0 || idx <= lastIjk) ++set;
+          lastIjk = idx;
+          var = 3 * set + 1 + idx;
+        }
+        if (var == 0 || var > 33) continue;
+        double v = a.value, undo = 0;
+        if (!a.point && !dpi_ && std::strchr("XYZIJKRQUVWABC", a.letter)) {
+          bool angular = a.letter == 'A' || a.letter == 'B' || a.letter == 'C';
+          double lii = leastIncrement(setup_.increment, angular ? InputUnit::Mm : modal_.unit);
+          v *= lii;
+          undo = 1.0 / lii;
+        }
+        args[static_cast<size_t>(var - 1)] = Value::num(v);
+        scale[static_cast<size_t>(var - 1)] = undo;
+      }
+      mc.args = args;
+      mc.scale = scale;
+      modalCalls_.push_back(mc);
+      modal_.g[12] = 660;
+    }
+    return;
+  }
+  if (g67) {
+    if (!modalCalls_.empty()) modalCalls_.pop_back();
+    if (modalCalls_.empty()) modal_.g[12] = 670;
+  }
+
+  // G codes: modal ones change state (the last of a group wins), one-shot ones are noted.
+  int oneShot = -1;
+  for (int k = 0; k < w.ng; ++k) {
+    int code = w.g[static_cast<size_t>(k)];
+    const GCodeInfo& info = *gInfo_[static_cast<size_t>(code)];
+    bool lathe50S = (code == 500 && series_ == Series::TA) || (code == 920 && lathe_ && series_ != Series::TA);
+    if (info.status == GStatus::NotYet && !(lathe50S && !w.any("XZUWYC"))) {
+      AlarmError e(AlarmId::ImproperGCode,
+                   fmt::format("G{:02d}{}: {} is not supported by ncvm yet", code / 10,
+                               code % 10 ? fmt::format(".{}", code % 10) : "", info.meaning));
+      e.col = w.gcol[static_cast<size_t>(k)];
+      throw e;
+    }
+    if (code == 670) continue;
+    if (info.group == 0) oneShot = code;
+    else applyModalG(code, info);
+  }
+  deriveModal();
+
+  if (w.has('F')) {
+    double fv = w.value('F');
+    if (fv < 0) throw AlarmError(AlarmId::IllegalMinus, "F");
+    // F without a decimal point: whole units per minute, but least increments per revolution.
+    if (!w.hasPoint('F') && !dpi_ && modal_.feedPerRev) fv *= leastIncrement(setup_.increment, modal_.unit);
+    modal_.feed = fv;
+  }
+  if (w.has('E')) modal_.e = w.value('E');
+  if (w.has('B') && setup_.axisSlot('B') < 0) modal_.b = w.value('B');
+  if (w.has('H')) modal_.hOffset = integerWord(w, 'H');
+  if (w.has('D')) modal_.dOffset = integerWord(w, 'D');
+  if (oneShot == 500 || oneShot == 920) {
+    // Lathe G50 S / G92 S: maximum spindle speed for constant surface speed.
+    spindleClamp_ = w.has('S') ? integerWord(w, 'S') : spindleClamp_;
+  } else if (w.has('S')) {
+    if (w.hasPoint('S') && !(w.point & ~w.point)) {
+      // A literal S with a point was already refused by the compiler; variables round.
+    }
+    modal_.speed = integerWord(w, 'S');
+    double before = rpm_;
+    rpm_ = modal_.speed;
+    if (spindleOn_ && rpm_ != before) {
+      sink_.onSpindle(SpindleEvent{origin_, modal_.lastM == 4 ? SpindleDir::Ccw : SpindleDir::Cw, rpm_});
+    }
+  }
+  if (w.has('T')) {
+    modal_.tool = integerWord(w, 'T');
+    if (setup_.tcs() && !f.codeCalled) {
+      writeVar(149, Value::num(modal_.tool));
+      ++f.pc;
+      callSub(findProgram(9000, -1), 1, true);
+      return;
+    }
+    sink_.onTool(ToolEvent{origin_, lathe_ ? modal_.tool / 100 : modal_.tool, false});
+  }
+  auxFunctions(w);
+  if (ended_) return;
+
+  bool moved = false;
+  std::array<int64_t, kMaxAxes> target{};
+  uint32_t mask = 0;
+  switch (oneShot) {
+    case 40:
+      dwell(w);
+      break;
+    case 280:
+    case 300:
+      referenceReturn(w, oneShot == 280 ? 1 : (w.has('P') ? integerWord(w, 'P') : 2));
+      moved = true;
+      break;
+    case 290:
+      returnFromReference(w);
+      moved = true;
+      break;
+    case 530:
+      machinePositioning(w);
+      moved = true;
+      break;
+    case 500:
+    case 920:
+      break;  // lathe spindle clamp, handled above
+    default: {
+      bool arc = modal_.motion == 20 || modal_.motion == 30;
+      bool hasAxes = axisTargets(w, target, mask);
+      if (arc && (hasAxes || w.any("IJKR"))) {
+        arcTo(target, w, modal_.motion == 20);
+        moved = true;
+      } else if (hasAxes) {
+        moveTo(target, modal_.motion == 0 ? MoveMode::Rapid : MoveMode::Linear, mask);
+        moved = true;
+      }
+      break;
+    }
+  }
+  programControl(w, moved);
+}
+
+void Executor::applyModalG(int code10, const GCodeInfo& info) {
+  modal_.g[info.group] = static_cast<int16_t>(code10);
+  if (code10 == 541) modal_.workP = 1;
+}
+
+void Executor::auxFunctions(Words& w) {
+  for (int k = 0; k < w.nm; ++k) {
+    int m = w.m[static_cast<size_t>(k)];
+    switch (m) {
+      case 0: case 1: case 2: case 30: case 98: case 99:
+        break;  // program control, after the motion
+      case 3:
+      case 4:
+        spindleOn_ = true;
+        modal_.lastM = m;
+        rpm_ = modal_.speed;
+        sink_.onSpindle(SpindleEvent{origin_, m == 3 ? SpindleDir::Cw : SpindleDir::Ccw, rpm_});
+        break;
+      case 5:
+        spindleOn_ = false;
+        modal_.lastM = m;
+        sink_.onSpindle(SpindleEvent{origin_, SpindleDir::Stop, 0});
+        break;
+      case 19:
+        spindleOn_ = false;
+        modal_.lastM = m;
+        sink_.onSpindle(SpindleEvent{origin_, SpindleDir::Orient, 0});
+        break;
+      case 6:
+        modal_.lastM = m;
+        sink_.onTool(ToolEvent{origin_, modal_.tool, true});
+        break;
+      case 7:
+      case 8:
+      case 9:
+        modal_.lastM = m;
+        sink_.onCoolant(CoolantEvent{origin_, m == 9 ? CoolantState::Off : m == 7 ? CoolantState::Mist : CoolantState::Flood});
+        break;
+      default:
+        if (int prog = setup_.mCodeSubCall(m); prog >= 0 && !frames_.back().codeCalled) {
+          // Subprogram-type M code call: the block's other words run first, then the call,
+          // which happens with programControl's ordering below (treated as M98).
+          w.subCallProgram = prog;
+          break;
+        }
+        modal_.lastM = m;
+        sink_.onAux(AuxEvent{origin_, 'M', m});
+        break;
+    }
+  }
+}
+
+void Executor::programControl(Words& w, bool moved) {
+  Frame& f = frames_.back();
+  ++f.pc;
+  const std::string comment =
+      block_->comment >= 0 ? f.prog->strings[static_cast<size_t>(block_->comment)] : std::string();
+  for (int k = 0; k < w.nm; ++k) {
+    int m = w.m[static_cast<size_t>(k)];
+    if (m == 0) {
+      modal_.lastM = 0;
+      sink_.onMessage(MessageEvent{origin_, comment, "M00"});
+    } else if (m == 1) {
+      modal_.lastM = 1;
+      if (setup_.optionalStop) sink_.onMessage(MessageEvent{origin_, comment, "M01"});
+    } else if (m == 2 || m == 30) {
+      modal_.lastM = m;
+      if (f.kind == FrameKind::Main || true) {
+        ended_ = true;
+        endReason_ = m == 2 ? EndReason::M02 : EndReason::M30;
+        if (m == 30) parts3901_ += 1;  // part count (parameter 6700 counts M30 by default)
+        return;
+      }
+    }
+  }
+  // A modal call (G66) runs after a block that moved an axis, before M98/M99 of the block.
+  if (moved && !modalCalls_.empty() && static_cast<int>(modalCalls_.size()) > f.modalFloor) {
+    const ModalCall& mc = modalCalls_.back();
+    callMacro(mc.prog, mc.repeats, mc.args, mc.scale, FrameKind::ModalMacro, false);
+    return;
+  }
+  for (int k = 0; k < w.nm; ++k) {
+    int m = w.m[static_cast<size_t>(k)];
+    if (m == 98) {
+      int32_t p = w.has('P') ? integerWord(w, 'P') : -1;
+      int repeats = w.has('L') ? integerWord(w, 'L') : 1;
+      if (p < 0 && w.nameIdx < 0) throw AlarmError(AlarmId::ProgramNotFound, "M98 without P");
+      if (!w.has('L') && p > 9999 && !setup_.bit("6000#8")) {
+        // M98 Pxxxxnnnn: repeat count in front of a four-digit program number.
+        repeats = p / 10000;
+        p %= 10000;
+      }
+      if (repeats < 0 || repeats > 9999) throw AlarmError(AlarmId::IntegerOverflow, "L");
+      if (repeats == 0) return;
+      callSub(findProgram(p, w.nameIdx), repeats, false);
+      return;
+    }
+    if (m == 99) {
+      modal_.lastM = 99;
+      doReturn(w.has('P') ? integerWord(w, 'P') : -1);
+      return;
+    }
+  }
+  if (w.subCallProgram >= 0) callSub(findProgram(w.subCallProgram, -1), 1, true);
+}
+
+}  // namespace ncvm

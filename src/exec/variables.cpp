@@ -1,0 +1,159 @@
+// Macro variables: #0, locals per call level, common #100-#199 and #500-#999, and the
+// system variables of fanuc-reference B.8-B.10.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "exec/executor.hpp"
+
+namespace ncvm {
+
+int Executor::axisByNumber(int n) const {
+  // Controlled axis numbers count only the axes the machine has: on a lathe #5002 is Z.
+  int seen = 0;
+  for (int k = 0; k < kMaxAxes; ++k) {
+    if (!setup_.axes[static_cast<size_t>(k)].present) continue;
+    if (++seen == n) return k;
+  }
+  return -1;
+}
+
+Value Executor::readVar(int64_t n) {
+  if (n >= 1 && n <= 33) return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
+  if (n >= 100 && n <= 199) return common100_[static_cast<size_t>(n - 100)];
+  if (n >= 500 && n <= 999) return common500_[static_cast<size_t>(n - 500)];
+  if (n == 0) return Value::vacant();
+  if (n >= 1000) return readSystem(n);
+  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
+void Executor::writeVar(int64_t n, Value v) {
+  if (!v.null && !std::isfinite(v.v)) throw AlarmError(AlarmId::FloatOverflow);
+  if (n >= 1 && n <= 33) {
+    auto L = static_cast<size_t>(frames_.empty() ? 0 : frames_.back().level);
+    locals_[L][static_cast<size_t>(n - 1)] = v;
+    noPointScale_[L][static_cast<size_t>(n - 1)] = 0;
+    return;
+  }
+  if (n >= 100 && n <= 199) {
+    common100_[static_cast<size_t>(n - 100)] = v;
+    return;
+  }
+  if (n >= 500 && n <= 999) {
+    common500_[static_cast<size_t>(n - 500)] = v;
+    return;
+  }
+  if (n == 0) throw AlarmError(AlarmId::WriteProtectedVariable, "#0");
+  if (n >= 1000) return writeSystem(n, v);
+  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
+namespace {
+[[noreturn]] void notYet(int64_t n, const char* what) {
+  throw AlarmError(AlarmId::VariableOutOfRange,
+                   fmt::format("#{}: {} are not supported by ncvm yet", n, what));
+}
+}  // namespace
+
+Value Executor::readSystem(int64_t n) {
+  auto posVar = [&](int64_t base, const std::array<int64_t, kMaxAxes>& nm, bool work) -> Value {
+    int slot = axisByNumber(static_cast<int>(n - base));
+    if (slot < 0) throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
+    (void)work;
+    return Value::num(toProgramUnits(nm[static_cast<size_t>(slot)], slot, true));
+  };
+  if (n >= 5001 && n <= 5020) return posVar(5000, programmed_, true);
+  if (n >= 5021 && n <= 5040) return posVar(5020, machine_, false);
+  if (n >= 5041 && n <= 5060) {
+    std::array<int64_t, kMaxAxes> work{};
+    for (size_t k = 0; k < kMaxAxes; ++k) work[k] = machine_[k] - offset_[k];
+    return posVar(5040, work, true);
+  }
+  if (n >= 5061 && n <= 5080) return posVar(5060, skip_, true);
+  if (n >= 5081 && n <= 5100) return Value::num(0.0);  // tool length offset per axis: none yet
+  if (n >= 5101 && n <= 5120) return Value::num(0.0);  // servo deviation: none in a simulation
+  if (n >= 4001 && n <= 4030) return Value::num(modal_.g[static_cast<size_t>(n - 4000)] / 10.0);
+  if (n >= 4201 && n <= 4230) return Value::num(modal_.g[static_cast<size_t>(n - 4200)] / 10.0);
+  if ((n >= 4102 && n <= 4130) || (n >= 4302 && n <= 4330)) {
+    int64_t k = n >= 4300 ? n - 4200 : n;
+    switch (k) {
+      case 4102: return Value::num(modal_.b);
+      case 4107: return Value::num(modal_.dOffset);
+      case 4108: return Value::num(modal_.e);
+      case 4109: return Value::num(modal_.feed);
+      case 4111: return Value::num(modal_.hOffset);
+      case 4113: return Value::num(modal_.lastM);
+      case 4114: return Value::num(block_ && block_->n >= 0 ? block_->n : 0);
+      case 4115: return Value::num(frames_.back().prog->number >= 0 ? frames_.back().prog->number : 0);
+      case 4119: return Value::num(modal_.speed);
+      case 4120: return Value::num(modal_.tool);
+      case 4130: return Value::num(modal_.workP);
+      default: return Value::vacant();
+    }
+  }
+  switch (n) {
+    case 3000: return Value::vacant();
+    case 3001: return Value::num(std::floor(simTime_ * 1000.0 + timerMsOffset_));
+    case 3002: return Value::num(simTime_ / 3600.0 + timerHourOffset_);
+    case 3003: return Value::num(sys3003_);
+    case 3004: return Value::num(sys3004_);
+    case 3005: return Value::num(sys3005_);
+    case 3006: return Value::vacant();
+    case 3007: return Value::num(0);  // mirror image status: none
+    case 3011: return Value::num(static_cast<double>(setup_.date));
+    case 3012: {
+      // Start time plus simulated time, as HHMMSS.
+      int64_t start = setup_.time;
+      int64_t secs = (start / 10000) * 3600 + (start / 100 % 100) * 60 + start % 100 +
+                     static_cast<int64_t>(simTime_);
+      secs %= 86400;
+      return Value::num(static_cast<double>(secs / 3600 * 10000 + secs / 60 % 60 * 100 + secs % 60));
+    }
+    case 3901: return Value::num(parts3901_);
+    case 3902: return Value::num(parts3902_);
+    case 4000: {
+      const Program* main = frames_.front().prog;
+      return Value::num(main->number >= 0 ? main->number : 0);
+    }
+    default: break;
+  }
+  if ((n >= 2001 && n <= 2999) || (n >= 10001 && n <= 13999)) notYet(n, "tool offsets");
+  if ((n >= 5201 && n <= 5340) || (n >= 7001 && n <= 7999) || (n >= 14001 && n <= 19988))
+    notYet(n, "work offsets");
+  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
+void Executor::writeSystem(int64_t n, Value v) {
+  std::string comment =
+      block_ && block_->comment >= 0 ? frames_.back().prog->strings[static_cast<size_t>(block_->comment)] : "";
+  switch (n) {
+    case 3000: {
+      // Macro alarm 3000+n with the block's comment as its message.
+      int64_t k = std::llround(v.asNumber());
+      if (k < 0 || k > 999) throw AlarmError(AlarmId::ArgumentOutOfRange, "#3000 takes 0-999");
+      throw AlarmError(fmt::format("MC{}", 3000 + k), comment);
+    }
+    case 3001: timerMsOffset_ = v.asNumber() - simTime_ * 1000.0; return;
+    case 3002: timerHourOffset_ = v.asNumber() - simTime_ / 3600.0; return;
+    case 3003: sys3003_ = v.asNumber(); return;
+    case 3004: sys3004_ = v.asNumber(); return;
+    case 3005: sys3005_ = v.asNumber(); return;
+    case 3006: {
+      // Message stop: recorded; the run continues as if cycle start were pressed.
+      sink_.onMessage(MessageEvent{origin_, comment, "#3006"});
+      return;
+    }
+    case 3901: parts3901_ = v.asNumber(); return;
+    case 3902: parts3902_ = v.asNumber(); return;
+    default: break;
+  }
+  if (n == 3007 || n == 3011 || n == 3012 || n == 4000 || (n >= 4001 && n <= 4330) ||
+      (n >= 5001 && n <= 5120))
+    throw AlarmError(AlarmId::WriteProtectedVariable, fmt::format("#{}", n));
+  if ((n >= 2001 && n <= 2999) || (n >= 10001 && n <= 13999)) notYet(n, "tool offsets");
+  if ((n >= 5201 && n <= 5340) || (n >= 7001 && n <= 7999) || (n >= 14001 && n <= 19988))
+    notYet(n, "work offsets");
+  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
+}  // namespace ncvm

@@ -1,0 +1,42 @@
+#pragma once
+// The evaluated words of one NC block: values after variables and expressions, with
+// whether each had a decimal point. Lives on the stack; no allocation per block.
+#include <array>
+#include <cstdint>
+#include <cstring>
+
+namespace ncvm {
+
+struct Words {
+  uint32_t present = 0;  // bit per letter A..Z
+  uint32_t point = 0;    // value had a decimal point or came from a variable/expression
+  uint32_t twice = 0;    // letters given more than once (the last one counts)
+  std::array<double, 26> val;
+  std::array<uint16_t, 26> col;
+  int ng = 0;
+  std::array<int16_t, 12> g;  // G codes x10 in block order
+  std::array<uint16_t, 12> gcol;
+  int nm = 0;
+  std::array<int32_t, 3> m;
+  int32_t nameIdx = -1;        // <name> word: index into Program::strings
+  int32_t subCallProgram = -1; // M code subprogram call (parameters 6071-6079)
+  struct Arg {
+    char letter;
+    double value;
+    bool point;
+  };
+  int nArgs = 0;
+  std::array<Arg, 48> args;  // macro arguments in block order (type II needs the order)
+
+  static constexpr uint32_t bit(char letter) { return 1u << (letter - 'A'); }
+  bool has(char letter) const { return present & bit(letter); }
+  bool hasPoint(char letter) const { return point & bit(letter); }
+  double value(char letter) const { return val[static_cast<size_t>(letter - 'A')]; }
+  bool any(const char* letters) const {
+    for (const char* c = letters; *c; ++c)
+      if (has(*c)) return true;
+    return false;
+  }
+};
+
+}  // namespace ncvm

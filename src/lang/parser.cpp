@@ -1,0 +1,963 @@
+#include "lang/parser.hpp"
+
+#include <charconv>
+#include <cstring>
+#include <string>
+
+namespace ncvm {
+namespace {
+
+constexpr int kMaxBracketNesting = 5;  // fanuc-reference B.3: five levels, functions included
+
+enum class Type : uint8_t { Num, Bool };
+
+bool isUpper(char c) { return c >= 'A' && c <= 'Z'; }
+bool isLower(char c) { return c >= 'a' && c <= 'z'; }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// Addresses that take no decimal point (fanuc-reference A.2). G is checked against the code
+// table by the executor, since G54.1 and friends are legal.
+bool forbidsPoint(char letter) { return std::strchr("NOPMSTHDL", letter) != nullptr; }
+// Addresses that take no sign.
+bool forbidsMinus(char letter) { return std::strchr("GMNOSTLHDP", letter) != nullptr; }
+
+struct FnName {
+  const char* name;
+  Fn fn;
+};
+constexpr FnName kFunctions[] = {
+    {"SIN", Fn::Sin},   {"COS", Fn::Cos},   {"TAN", Fn::Tan},     {"ASIN", Fn::Asin},
+    {"ACOS", Fn::Acos}, {"ATAN", Fn::Atan}, {"ATN", Fn::Atan},    {"SQRT", Fn::Sqrt},
+    {"SQR", Fn::Sqrt},  {"ABS", Fn::Abs},   {"BIN", Fn::Bin},     {"BCD", Fn::Bcd},
+    {"ROUND", Fn::Round}, {"RND", Fn::Round}, {"FIX", Fn::Fix}, {"FUP", Fn::Fup},
+    {"LN", Fn::Ln},     {"EXP", Fn::Exp},   {"POW", Fn::Pow},     {"ADP", Fn::Adp},
+};
+
+class Compiler {
+ public:
+  Compiler(std::string_view text, uint32_t file, std::string_view stem, const ParseOptions& opt)
+      : s_(text), file_(file), stem_(stem), opt_(opt) {}
+
+  ParsedFile run();
+
+ private:
+  // ---- text position -------------------------------------------------------------------
+  std::string_view s_;
+  uint32_t file_;
+  std::string_view stem_;
+  ParseOptions opt_;
+  size_t i_ = 0, end_ = 0, lineStart_ = 0;
+  uint32_t line_ = 0;
+
+  ParsedFile out_;
+  Program* prog_ = nullptr;
+  Block blk_;
+  int depth_ = 0;            // bracket nesting inside the current expression
+  bool sawStatement_ = false;  // a macro statement is in this block
+  uint16_t ncWords_ = 0;
+  bool sawHeaderComment_ = false;
+
+  uint32_t col() const { return static_cast<uint32_t>(i_ - lineStart_ + 1); }
+  char peek(size_t k = 0) const { return i_ + k < end_ ? s_[i_ + k] : '\0'; }
+  bool atEnd() const { return i_ >= end_; }
+  void skipSpaces() {
+    while (i_ < end_ && isSpace(s_[i_])) ++i_;
+  }
+  [[noreturn]] void fail(AlarmId id, std::string detail = {}, uint32_t at = 0) const {
+    AlarmError e(id, std::move(detail));
+    e.col = at ? at : col();
+    throw e;
+  }
+
+  // ---- programs and blocks --------------------------------------------------------------
+  Program& ensureProgram() {
+    if (!prog_) startProgram(-1, std::string(stem_), SourceLoc{file_, line_, 1});
+    return *prog_;
+  }
+  void startProgram(int32_t number, std::string name, SourceLoc loc) {
+    if (prog_) resolveStructure(*prog_);
+    out_.programs.emplace_back();
+    prog_ = &out_.programs.back();
+    prog_->number = number;
+    prog_->name = std::move(name);
+    prog_->loc = loc;
+    sawHeaderComment_ = false;
+  }
+  void parseLine(size_t b, size_t e);
+  void parseBlock(size_t b, size_t e);
+  bool parseHeader();
+  void parseStatements();
+  void parseComment();
+  void parseWord();
+  void parseCommaWord();
+  void parseAssign(bool asThen);
+  void parseIf();
+  void parseGotoTarget();
+  void parseWhile();
+  void parseDo(int32_t cond);
+  void parseEnd();
+  void parsePrint(PrintKind kind);
+  void beginStatement(uint32_t at);
+  void commitBlock();
+
+  // ---- expressions ----------------------------------------------------------------------
+  int32_t compileExpr(Type want, uint32_t at);  // full expression -> index into exprs
+  Type parseRel();
+  Type parseSum();
+  Type parseTerm();
+  Type parseUnary();
+  Type parsePrimary();
+  Type parseBracket();
+  void parseVarRef();  // after '#'
+  bool peekKeyword(const char* kw) const;
+  size_t letterRun() const {
+    size_t k = 0;
+    while (isUpper(peek(k))) ++k;
+    return k;
+  }
+  void emit(Op op, uint32_t at, int32_t arg = 0, Fn fn = Fn::Sin) {
+    prog_->code.push_back(Instr{op, fn, static_cast<uint16_t>(at > 0xffff ? 0xffff : at), arg});
+  }
+  int32_t addConst(double v) {
+    prog_->consts.push_back(v);
+    return static_cast<int32_t>(prog_->consts.size() - 1);
+  }
+  double parseNumberText(bool& hasPoint, int& intDigits);
+};
+
+ParsedFile Compiler::run() {
+  // Tape format: text before the first '%' is leader and is skipped when the file has a
+  // '%' at all; '%' characters themselves are separators, so "%O1200(TITLE)" works.
+  size_t firstPercent = s_.find('%');
+  size_t pos = 0;
+  if (firstPercent != std::string_view::npos) {
+    // Leader: count the lines we skip so line numbers stay right.
+    for (size_t k = 0; k < firstPercent; ++k)
+      if (s_[k] == '\n') ++line_;
+    pos = firstPercent;
+    lineStart_ = s_.rfind('\n', firstPercent) == std::string_view::npos
+                     ? 0
+                     : s_.rfind('\n', firstPercent) + 1;
+  }
+  bool firstLine = true;
+  while (pos < s_.size()) {
+    size_t nl = s_.find('\n', pos);
+    size_t e = nl == std::string_view::npos ? s_.size() : nl;
+    ++line_;
+    if (!firstLine || firstPercent == std::string_view::npos) lineStart_ = pos;
+    firstLine = false;
+    parseLine(pos, e);
+    pos = e + 1;
+  }
+  if (prog_) resolveStructure(*prog_);
+  return std::move(out_);
+}
+
+void Compiler::parseLine(size_t b, size_t e) {
+  // Split at ';' (the EOB of printed listings) and '%' outside comments.
+  size_t start = b;
+  bool inComment = false;
+  for (size_t k = b; k < e; ++k) {
+    char c = s_[k];
+    if (inComment) {
+      if (c == ')') inComment = false;
+      continue;
+    }
+    if (c == '(') inComment = true;
+    else if (c == ';' || c == '%') {
+      parseBlock(start, k);
+      start = k + 1;
+    }
+  }
+  parseBlock(start, e);
+}
+
+void Compiler::parseBlock(size_t b, size_t e) {
+  i_ = b;
+  end_ = e;
+  skipSpaces();
+  if (atEnd()) return;
+  blk_ = Block{};
+  blk_.loc = SourceLoc{file_, line_, col()};
+  sawStatement_ = false;
+  ncWords_ = 0;
+  size_t wordsBefore = prog_ ? prog_->words.size() : 0;
+  try {
+    if (opt_.maxLineLength && e - b > opt_.maxLineLength)
+      fail(AlarmId::LineTooLong, "block longer than " + std::to_string(opt_.maxLineLength));
+    if (parseHeader()) return;
+    Program& p = ensureProgram();
+    blk_.firstWord = static_cast<uint32_t>(p.words.size());
+    if (peek() == '/') {
+      ++i_;
+      blk_.skipLevel = 1;
+      if (peek() >= '1' && peek() <= '9') blk_.skipLevel = static_cast<uint8_t>(peek() - '0'), ++i_;
+      skipSpaces();
+    }
+    if (peek() == 'N' && isDigit(peek(1))) {
+      ++i_;
+      uint32_t at = col();
+      int64_t n = 0;
+      int digits = 0;
+      while (isDigit(peek())) n = n * 10 + (peek() - '0'), ++i_, ++digits;
+      if (peek() == '.') fail(AlarmId::IllegalDecimalPoint, "in N", at);
+      if (digits > 8) fail(AlarmId::TooManyDigits, "N", at);
+      blk_.n = static_cast<int32_t>(n);
+    }
+    parseStatements();
+    commitBlock();
+  } catch (const AlarmError& err) {
+    Program& p = ensureProgram();
+    p.words.resize(std::max(wordsBefore, static_cast<size_t>(blk_.firstWord)));
+    Alarm a{err.code(), err.text(), SourceLoc{file_, line_, err.col ? err.col : blk_.loc.col},
+            blk_.n >= 0 ? std::optional<int64_t>(blk_.n) : std::nullopt, p.number};
+    p.errors.push_back(std::move(a));
+    Block bad = blk_;
+    bad.kind = BlockKind::Error;
+    bad.nWords = 0;
+    bad.error = static_cast<int32_t>(p.errors.size() - 1);
+    if (bad.n >= 0) p.labels.emplace_back(bad.n, static_cast<uint32_t>(p.blocks.size()));
+    p.blocks.push_back(bad);
+  }
+}
+
+// "Onnnn", ":nnnn" or "<name>" at the head of a block starts a program.
+bool Compiler::parseHeader() {
+  char c = peek();
+  bool numbered = (c == 'O' || c == ':') && isDigit(peek(1));
+  if (!numbered && c != '<') return false;
+  SourceLoc loc{file_, line_, col()};
+  if (numbered) {
+    ++i_;
+    int64_t n = 0;
+    int digits = 0;
+    while (isDigit(peek())) n = n * 10 + (peek() - '0'), ++i_, ++digits;
+    int64_t max = opt_.eightDigitO ? 99999999 : 9999;
+    // Four digits is the classic limit; leading zeros do not count.
+    if (n == 0 || n > max) {
+      startProgram(-1, std::string(stem_), loc);
+      fail(AlarmId::ProgramNumberOutOfRange, "O" + std::to_string(n), loc.col);
+    }
+    startProgram(static_cast<int32_t>(n), {}, loc);
+  } else {
+    size_t close = s_.find('>', i_);
+    if (close == std::string_view::npos || close >= end_) return false;
+    std::string name(s_.substr(i_ + 1, close - i_ - 1));
+    i_ = close + 1;
+    startProgram(-1, name, loc);
+  }
+  // The rest of a header line is its title comment.
+  skipSpaces();
+  while (!atEnd()) {
+    if (peek() == '(') {
+      parseComment();
+    } else {
+      // Anything else after a program number is an ordinary block on the same line.
+      blk_ = Block{};
+      blk_.loc = SourceLoc{file_, line_, col()};
+      blk_.firstWord = static_cast<uint32_t>(prog_->words.size());
+      parseStatements();
+      commitBlock();
+      return true;
+    }
+    skipSpaces();
+  }
+  return true;
+}
+
+void Compiler::parseComment() {
+  size_t close = s_.find(')', i_);
+  size_t stop = (close == std::string_view::npos || close >= end_) ? end_ : close;
+  if (blk_.comment < 0 && prog_) {
+    prog_->strings.emplace_back(s_.substr(i_ + 1, stop - i_ - 1));
+    blk_.comment = static_cast<int32_t>(prog_->strings.size() - 1);
+  }
+  i_ = stop < end_ ? stop + 1 : end_;
+}
+
+void Compiler::beginStatement(uint32_t at) {
+  if (sawStatement_ || ncWords_ > 0) fail(AlarmId::DuplicateNcMacro, {}, at);
+  sawStatement_ = true;
+}
+
+void Compiler::parseStatements() {
+  while (true) {
+    skipSpaces();
+    if (atEnd()) return;
+    char c = peek();
+    uint32_t at = col();
+    if (c == '(') {
+      parseComment();
+    } else if (c == '#') {
+      beginStatement(at);
+      parseAssign(false);
+    } else if (isUpper(c) && isUpper(peek(1))) {
+      size_t n = letterRun();
+      std::string_view kw = s_.substr(i_, n);
+      if (kw == "IF") {
+        beginStatement(at), i_ += 2, parseIf();
+      } else if (kw == "GOTO") {
+        beginStatement(at), i_ += 4, blk_.kind = BlockKind::Goto, parseGotoTarget();
+      } else if (kw == "WHILE") {
+        beginStatement(at), i_ += 5, parseWhile();
+      } else if (kw.substr(0, 2) == "DO" && (n == 2)) {
+        beginStatement(at), i_ += 2, parseDo(-1);
+      } else if (kw == "END") {
+        beginStatement(at), i_ += 3, parseEnd();
+      } else if (kw == "DPRNT") {
+        beginStatement(at), i_ += 5, parsePrint(PrintKind::Dprnt);
+      } else if (kw == "BPRNT") {
+        beginStatement(at), i_ += 5, parsePrint(PrintKind::Bprnt);
+      } else if (kw == "POPEN") {
+        beginStatement(at), i_ += 5, blk_.kind = BlockKind::Popen;
+      } else if (kw == "PCLOS") {
+        beginStatement(at), i_ += 5, blk_.kind = BlockKind::Pclos;
+      } else {
+        fail(AlarmId::ImproperAddress, "unknown word '" + std::string(kw) + "'", at);
+      }
+    } else if (isUpper(c)) {
+      if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
+      parseWord();
+    } else if (c == ',' && (peek(1) == 'C' || peek(1) == 'R')) {
+      if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
+      parseCommaWord();
+    } else if (c == '<') {
+      // <name> as the program of M98/G65/G66 (30i): stored as word '<' naming a string.
+      size_t close = s_.find('>', i_);
+      if (close == std::string_view::npos || close >= end_)
+        fail(AlarmId::ImproperAddress, "'<' without '>'", at);
+      prog_->strings.emplace_back(s_.substr(i_ + 1, close - i_ - 1));
+      Word w;
+      w.letter = '<';
+      w.col = static_cast<uint16_t>(at);
+      w.a = static_cast<int32_t>(prog_->strings.size() - 1);
+      prog_->words.push_back(w);
+      ++ncWords_;
+      i_ = close + 1;
+    } else if (isLower(c)) {
+      fail(AlarmId::ImproperAddress, std::string("lower-case '") + c + "'", at);
+    } else {
+      fail(AlarmId::ImproperAddress, std::string("unexpected '") + c + "'", at);
+    }
+  }
+}
+
+void Compiler::commitBlock() {
+  Program& p = *prog_;
+  uint32_t nWords = static_cast<uint32_t>(p.words.size() - blk_.firstWord);
+  bool macroCall = false;
+  for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
+    const Word& w = p.words[k];
+    if (w.letter == 'G' && w.kind == WordKind::Literal)
+      macroCall |= w.value == 65 || w.value == 66 || w.value == 66.1;
+  }
+  for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
+    const Word& w = p.words[k];
+    bool argument = macroCall && w.letter != 'P' && w.letter != 'L';
+    if ((w.flags & kHasPoint) && forbidsPoint(w.letter) && !argument)
+      fail(AlarmId::IllegalDecimalPoint, std::string(1, w.letter), w.col);
+  }
+  blk_.nWords = static_cast<uint16_t>(nWords);
+  if (nWords > 0 && blk_.kind == BlockKind::Empty) blk_.kind = BlockKind::Nc;
+  if (blk_.kind == BlockKind::Empty && blk_.n < 0 && blk_.skipLevel == 0 && blk_.comment < 0)
+    return;  // nothing to keep
+  if (blk_.n >= 0) p.labels.emplace_back(blk_.n, static_cast<uint32_t>(p.blocks.size()));
+  p.blocks.push_back(blk_);
+}
+
+double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
+  size_t start = i_;
+  hasPoint = false;
+  intDigits = 0;
+  bool leading = true;
+  if (peek() == '+' || peek() == '-') ++i_;
+  while (true) {
+    char c = peek();
+    if (isDigit(c)) {
+      if (!hasPoint) {
+        if (c != '0' || !leading) ++intDigits, leading = false;
+      }
+      ++i_;
+    } else if (c == '.') {
+      if (hasPoint) fail(AlarmId::IllegalDecimalPoint, "two decimal points");
+      hasPoint = true;
+      ++i_;
+    } else {
+      break;
+    }
+  }
+  std::string_view text = s_.substr(start, i_ - start);
+  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
+  bool anyDigit = false;
+  for (char c : text) anyDigit |= isDigit(c);
+  if (!anyDigit) return 0.0;  // "X." reads as zero
+  double v = 0;
+  std::string buf;
+  if (text.back() == '.') {
+    buf = std::string(text) + "0";
+    text = buf;
+  }
+  auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (res.ec != std::errc()) fail(AlarmId::FloatOverflow, "number out of range");
+  return v;
+}
+
+void Compiler::parseWord() {
+  char letter = peek();
+  uint32_t at = col();
+  if (letter == 'O' || letter == 'N')
+    fail(AlarmId::ImproperAddress, std::string(1, letter) + " inside a block", at);
+  ++i_;
+  skipSpaces();
+  Word w;
+  w.letter = letter;
+  w.col = static_cast<uint16_t>(at > 0xffff ? 0xffff : at);
+  char c = peek();
+  if (c == '#' || ((c == '-' || c == '+') && peek(1) == '#')) {
+    bool neg = c == '-';
+    if (c != '#') ++i_;
+    if (neg && forbidsMinus(letter)) fail(AlarmId::IllegalMinus, std::string(1, letter), at);
+    if (isDigit(peek(1))) {
+      ++i_;
+      int64_t n = 0;
+      while (isDigit(peek())) {
+        n = n * 10 + (peek() - '0'), ++i_;
+        if (n > 99999999) fail(AlarmId::VariableOutOfRange, {}, at);
+      }
+      w.kind = neg ? WordKind::NegVar : WordKind::Var;
+      w.a = static_cast<int32_t>(n);
+    } else {
+      // X#[expr] or X-#[expr]: compile the variable read (and the sign) as an expression.
+      uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+      depth_ = 0;
+      ++i_;
+      parseVarRef();
+      if (neg) emit(Op::Neg, at);
+      prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+      w.kind = WordKind::Expr;
+      w.a = static_cast<int32_t>(prog_->exprs.size() - 1);
+    }
+  } else if (c == '[' || ((c == '-' || c == '+') && peek(1) == '[')) {
+    bool neg = c == '-';
+    if (c != '[') ++i_;
+    if (neg && forbidsMinus(letter)) fail(AlarmId::IllegalMinus, std::string(1, letter), at);
+    uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+    depth_ = 0;
+    Type t = parseBracket();
+    if (t != Type::Num) fail(AlarmId::IllegalExpressionFormat, "condition used as a value", at);
+    if (neg) emit(Op::Neg, at);
+    prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+    w.kind = WordKind::Expr;
+    w.a = static_cast<int32_t>(prog_->exprs.size() - 1);
+  } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
+    if (c == '-' && forbidsMinus(letter)) fail(AlarmId::IllegalMinus, std::string(1, letter), at);
+    bool hasPoint = false;
+    int intDigits = 0;
+    size_t numStart = i_;
+    w.value = parseNumberText(hasPoint, intDigits);
+    if (i_ == numStart || (i_ == numStart + 1 && (c == '-' || c == '+')))
+      fail(AlarmId::NoDataAfterAddress, std::string(1, letter), at);
+    // Decimal points on P, M, S, T, H, D... are checked at the end of the block: in a
+    // G65/G66 block those letters are arguments and take a point (D5.0).
+    if (intDigits > 9) fail(AlarmId::TooManyDigits, std::string(1, letter), at);
+    if (hasPoint) w.flags |= kHasPoint;
+  } else {
+    fail(AlarmId::NoDataAfterAddress, std::string(1, letter), at);
+  }
+  prog_->words.push_back(w);
+  ++ncWords_;
+}
+
+void Compiler::parseCommaWord() {
+  uint32_t at = col();
+  char letter = peek(1) == 'C' ? 'c' : 'r';
+  i_ += 2;
+  skipSpaces();
+  Word w;
+  w.letter = letter;
+  w.col = static_cast<uint16_t>(at);
+  if (peek() == '#' || peek() == '[') {
+    uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+    depth_ = 0;
+    Type t = parsePrimary();
+    if (t != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
+    prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+    w.kind = WordKind::Expr;
+    w.a = static_cast<int32_t>(prog_->exprs.size() - 1);
+  } else {
+    bool hasPoint = false;
+    int intDigits = 0;
+    w.value = parseNumberText(hasPoint, intDigits);
+    if (hasPoint) w.flags |= kHasPoint;
+  }
+  prog_->words.push_back(w);
+  ++ncWords_;
+}
+
+void Compiler::parseAssign(bool asThen) {
+  uint32_t at = col();
+  if (peek() != '#') fail(AlarmId::MacroStatementFormat, "assignment expected", at);
+  ++i_;
+  skipSpaces();
+  if (isDigit(peek())) {
+    int64_t n = 0;
+    while (isDigit(peek())) {
+      n = n * 10 + (peek() - '0'), ++i_;
+      if (n > 99999999) fail(AlarmId::VariableOutOfRange, {}, at);
+    }
+    blk_.lhsVar = static_cast<int32_t>(n);
+  } else if (peek() == '[') {
+    depth_ = 0;
+    uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+    if (parseBracket() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
+    prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+    blk_.lhsExpr = static_cast<int32_t>(prog_->exprs.size() - 1);
+  } else {
+    fail(AlarmId::IllegalExpressionFormat, "'#' without a variable number", at);
+  }
+  skipSpaces();
+  if (peek() != '=') fail(AlarmId::MacroStatementFormat, "'=' expected", col());
+  ++i_;
+  blk_.rhs = compileExpr(Type::Num, col());
+  if (!asThen) blk_.kind = BlockKind::Assign;
+}
+
+void Compiler::parseIf() {
+  skipSpaces();
+  uint32_t at = col();
+  if (peek() != '[') fail(AlarmId::MacroStatementFormat, "IF needs [condition]", at);
+  blk_.kind = BlockKind::If;
+  depth_ = 0;
+  uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+  if (parseBracket() != Type::Bool)
+    fail(AlarmId::IllegalExpressionFormat, "IF needs a condition (EQ NE GT GE LT LE)", at);
+  prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+  blk_.cond = static_cast<int32_t>(prog_->exprs.size() - 1);
+  skipSpaces();
+  if (peekKeyword("GOTO")) {
+    i_ += 4;
+    parseGotoTarget();
+  } else if (peekKeyword("THEN")) {
+    i_ += 4;
+    skipSpaces();
+    blk_.thenAssign = true;
+    parseAssign(true);
+  } else {
+    fail(AlarmId::MacroStatementFormat, "IF without GOTO or THEN", col());
+  }
+}
+
+void Compiler::parseGotoTarget() {
+  skipSpaces();
+  uint32_t at = col();
+  if (isDigit(peek())) {
+    int64_t n = 0;
+    while (isDigit(peek())) {
+      n = n * 10 + (peek() - '0'), ++i_;
+      if (n > 99999999) break;
+    }
+    if (n < 1 || n > 99999999) fail(AlarmId::IllegalMacroSequence, std::to_string(n), at);
+    blk_.gotoLabel = static_cast<int32_t>(n);
+  } else if (peek() == '#' || peek() == '[') {
+    depth_ = 0;
+    uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+    if (parsePrimary() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
+    prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+    blk_.gotoExpr = static_cast<int32_t>(prog_->exprs.size() - 1);
+  } else {
+    fail(AlarmId::MacroStatementFormat, "GOTO needs a sequence number", at);
+  }
+}
+
+void Compiler::parseWhile() {
+  skipSpaces();
+  uint32_t at = col();
+  if (peek() != '[') fail(AlarmId::MacroStatementFormat, "WHILE needs [condition]", at);
+  depth_ = 0;
+  uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+  if (parseBracket() != Type::Bool) fail(AlarmId::IllegalExpressionFormat, "WHILE needs a condition", at);
+  prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+  int32_t cond = static_cast<int32_t>(prog_->exprs.size() - 1);
+  skipSpaces();
+  if (!peekKeyword("DO")) fail(AlarmId::MacroStatementFormat, "WHILE without DO", col());
+  i_ += 2;
+  parseDo(cond);
+}
+
+void Compiler::parseDo(int32_t cond) {
+  skipSpaces();
+  uint32_t at = col();
+  if (!isDigit(peek())) fail(AlarmId::IllegalLoopNumber, "DO without a number", at);
+  int n = 0;
+  while (isDigit(peek())) n = std::min(n * 10 + (peek() - '0'), 1000), ++i_;
+  blk_.kind = BlockKind::While;
+  blk_.cond = cond;
+  blk_.loopId = static_cast<uint8_t>(std::min(n, 255));
+}
+
+void Compiler::parseEnd() {
+  skipSpaces();
+  uint32_t at = col();
+  if (!isDigit(peek())) fail(AlarmId::IllegalLoopNumber, "END without a number", at);
+  int n = 0;
+  while (isDigit(peek())) n = std::min(n * 10 + (peek() - '0'), 1000), ++i_;
+  blk_.kind = BlockKind::End;
+  blk_.loopId = static_cast<uint8_t>(std::min(n, 255));
+}
+
+void Compiler::parsePrint(PrintKind kind) {
+  skipSpaces();
+  uint32_t at = col();
+  if (peek() != '[') fail(AlarmId::MacroStatementFormat, "DPRNT needs [...]", at);
+  ++i_;
+  blk_.kind = BlockKind::Print;
+  blk_.printKind = kind;
+  blk_.firstPrint = static_cast<uint32_t>(prog_->prints.size());
+  PrintItem text;
+  auto flushText = [&] {
+    if (!text.text.empty()) prog_->prints.push_back(text), text.text.clear();
+  };
+  while (true) {
+    if (atEnd()) fail(AlarmId::MacroStatementFormat, "DPRNT without ']'", at);
+    char c = peek();
+    if (c == ']') {
+      ++i_;
+      break;
+    }
+    if (isSpace(c)) {
+      ++i_;  // spaces are not part of a program; '*' prints a space
+      continue;
+    }
+    if (c == '#') {
+      flushText();
+      PrintItem item;
+      item.isVar = true;
+      uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+      depth_ = 0;
+      ++i_;
+      parseVarRef();
+      prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+      item.expr = static_cast<int32_t>(prog_->exprs.size() - 1);
+      skipSpaces();
+      if (peek() != '[') fail(AlarmId::MacroStatementFormat, "variable needs a [digits] format", col());
+      ++i_;
+      std::string digits;
+      while (isDigit(peek())) digits += peek(), ++i_;
+      if (peek() != ']') fail(AlarmId::MacroStatementFormat, "bad format", col());
+      ++i_;
+      if (kind == PrintKind::Dprnt) {
+        if (digits.size() != 2) fail(AlarmId::MacroStatementFormat, "format is [ab]", col());
+        item.intDigits = static_cast<uint8_t>(digits[0] - '0');
+        item.fracDigits = static_cast<uint8_t>(digits[1] - '0');
+        if (item.intDigits + item.fracDigits > 8 || item.intDigits == 0)
+          fail(AlarmId::MacroStatementFormat, "a+b must be 1..8", col());
+      } else {
+        if (digits.size() != 1) fail(AlarmId::MacroStatementFormat, "format is [b]", col());
+        item.fracDigits = static_cast<uint8_t>(digits[0] - '0');
+      }
+      prog_->prints.push_back(item);
+      continue;
+    }
+    if (c == '[' || c == '(') fail(AlarmId::MacroStatementFormat, "unexpected bracket", col());
+    text.text += c == '*' ? ' ' : c;
+    ++i_;
+  }
+  flushText();
+  blk_.nPrint = static_cast<uint32_t>(prog_->prints.size()) - blk_.firstPrint;
+}
+
+// ---- expressions ----------------------------------------------------------------------------
+
+bool Compiler::peekKeyword(const char* kw) const {
+  size_t n = std::strlen(kw);
+  for (size_t k = 0; k < n; ++k)
+    if (peek(k) != kw[k]) return false;
+  return true;
+}
+
+int32_t Compiler::compileExpr(Type want, uint32_t at) {
+  depth_ = 0;
+  uint32_t begin = static_cast<uint32_t>(prog_->code.size());
+  Type t = parseRel();
+  if (t != want)
+    fail(AlarmId::IllegalExpressionFormat,
+         want == Type::Num ? "condition used as a value" : "value used as a condition", at);
+  skipSpaces();
+  prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
+  return static_cast<int32_t>(prog_->exprs.size() - 1);
+}
+
+Type Compiler::parseRel() {
+  Type a = parseSum();
+  skipSpaces();
+  static constexpr struct {
+    const char* kw;
+    Op op;
+  } rel[] = {{"EQ", Op::Eq}, {"NE", Op::Ne}, {"GT", Op::Gt},
+             {"GE", Op::Ge}, {"LT", Op::Lt}, {"LE", Op::Le}};
+  if (letterRun() == 2) {
+    for (const auto& r : rel) {
+      if (peekKeyword(r.kw)) {
+        uint32_t at = col();
+        i_ += 2;
+        Type b = parseSum();
+        if (a != Type::Num || b != Type::Num)
+          fail(AlarmId::IllegalExpressionFormat, "comparison of conditions", at);
+        emit(r.op, at);
+        return Type::Bool;
+      }
+    }
+  }
+  return a;
+}
+
+Type Compiler::parseSum() {
+  Type a = parseTerm();
+  while (true) {
+    skipSpaces();
+    uint32_t at = col();
+    char c = peek();
+    Op op;
+    size_t len = 1;
+    if (c == '+') op = Op::Add;
+    else if (c == '-') op = Op::Sub;
+    else if (letterRun() == 2 && peekKeyword("OR")) op = Op::Or, len = 2;
+    else if (letterRun() == 3 && peekKeyword("XOR")) op = Op::Xor, len = 3;
+    else return a;
+    i_ += len;
+    Type b = parseTerm();
+    if (op == Op::Or || op == Op::Xor) {
+      if (a != b) fail(AlarmId::IllegalExpressionFormat, "mixing a condition and a value", at);
+      if (a == Type::Bool) op = op == Op::Or ? Op::LOr : Op::LXor;
+    } else if (a != Type::Num || b != Type::Num) {
+      fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
+    }
+    emit(op, at);
+  }
+}
+
+Type Compiler::parseTerm() {
+  Type a = parseUnary();
+  while (true) {
+    skipSpaces();
+    uint32_t at = col();
+    char c = peek();
+    Op op;
+    size_t len = 1;
+    if (c == '*') op = Op::Mul;
+    else if (c == '/') op = Op::Div;
+    else if (letterRun() == 3 && peekKeyword("AND")) op = Op::And, len = 3;
+    else if (letterRun() == 3 && peekKeyword("MOD")) op = Op::Mod, len = 3;
+    else return a;
+    i_ += len;
+    Type b = parseUnary();
+    if (op == Op::And) {
+      if (a != b) fail(AlarmId::IllegalExpressionFormat, "mixing a condition and a value", at);
+      if (a == Type::Bool) op = Op::LAnd;
+    } else if (a != Type::Num || b != Type::Num) {
+      fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
+    }
+    emit(op, at);
+  }
+}
+
+Type Compiler::parseUnary() {
+  skipSpaces();
+  uint32_t at = col();
+  if (peek() == '-') {
+    ++i_;
+    if (parseUnary() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
+    emit(Op::Neg, at);
+    return Type::Num;
+  }
+  if (peek() == '+') {
+    ++i_;
+    return parseUnary();
+  }
+  return parsePrimary();
+}
+
+Type Compiler::parseBracket() {
+  uint32_t at = col();
+  ++i_;  // '['
+  if (++depth_ > kMaxBracketNesting) fail(AlarmId::TooManyBrackets, {}, at);
+  Type t = parseRel();
+  skipSpaces();
+  if (peek() != ']') fail(AlarmId::IllegalExpressionFormat, "']' expected", col());
+  ++i_;
+  --depth_;
+  return t;
+}
+
+void Compiler::parseVarRef() {
+  // After '#': digits, or [expr] for an indirect reference. '##1' is not allowed.
+  skipSpaces();
+  uint32_t at = col();
+  if (isDigit(peek())) {
+    int64_t n = 0;
+    while (isDigit(peek())) {
+      n = n * 10 + (peek() - '0'), ++i_;
+      if (n > 99999999) fail(AlarmId::VariableOutOfRange, {}, at);
+    }
+    emit(Op::Var, at, static_cast<int32_t>(n));
+  } else if (peek() == '[') {
+    if (parseBracket() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
+    emit(Op::VarInd, at);
+  } else {
+    fail(AlarmId::IllegalExpressionFormat, "'#' without a variable number", at);
+  }
+}
+
+Type Compiler::parsePrimary() {
+  skipSpaces();
+  uint32_t at = col();
+  char c = peek();
+  if (c == '[') return parseBracket();
+  if (c == '#') {
+    ++i_;
+    parseVarRef();
+    return Type::Num;
+  }
+  if (isDigit(c) || c == '.') {
+    bool hasPoint = false;
+    int intDigits = 0;
+    double v = parseNumberText(hasPoint, intDigits);
+    emit(Op::Const, at, addConst(v));
+    return Type::Num;
+  }
+  if (isUpper(c)) {
+    size_t n = letterRun();
+    std::string_view name = s_.substr(i_, n);
+    for (const auto& f : kFunctions) {
+      if (name != f.name) continue;
+      i_ += n;
+      skipSpaces();
+      if (peek() != '[') fail(AlarmId::IllegalExpressionFormat, std::string(name) + " needs [", col());
+      uint32_t open = col();
+      ++i_;
+      if (++depth_ > kMaxBracketNesting) fail(AlarmId::TooManyBrackets, {}, open);
+      size_t firstInstr = prog_->code.size();
+      if (parseRel() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, open);
+      skipSpaces();
+      bool two = false;
+      if (peek() == ',' && (f.fn == Fn::Atan || f.fn == Fn::Pow)) {
+        ++i_;
+        if (parseRel() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, open);
+        skipSpaces();
+        two = true;
+      }
+      if (peek() != ']') fail(AlarmId::IllegalExpressionFormat, "']' expected", col());
+      ++i_;
+      --depth_;
+      if (f.fn == Fn::Atan && !two) {
+        // ATAN[a]/[b]: the Fanuc two-argument form.
+        size_t save = i_;
+        skipSpaces();
+        if (peek() == '/') {
+          ++i_;
+          skipSpaces();
+          if (peek() == '[') {
+            if (parseBracket() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
+            two = true;
+          } else {
+            i_ = save;
+          }
+        } else {
+          i_ = save;
+        }
+      }
+      if (f.fn == Fn::Pow && !two) fail(AlarmId::IllegalExpressionFormat, "POW[a,b]", at);
+      if (f.fn == Fn::Adp) {
+        // ADP works on a local variable passed as an argument: it needs the variable itself.
+        const Instr& only = prog_->code[firstInstr];
+        if (prog_->code.size() != firstInstr + 1 || only.op != Op::Var)
+          fail(AlarmId::IllegalExpressionFormat, "ADP needs a variable: ADP[#n]", at);
+        emit(Op::Fn1, at, only.arg, Fn::Adp);
+        return Type::Num;
+      }
+      if (two) emit(Op::Fn2, at, 0, f.fn == Fn::Atan ? Fn::Atan2 : Fn::Pow);
+      else emit(Op::Fn1, at, 0, f.fn);
+      return Type::Num;
+    }
+    fail(AlarmId::IllegalExpressionFormat, "unknown word '" + std::string(name) + "'", at);
+  }
+  if (c == '\0') fail(AlarmId::IllegalExpressionFormat, "expression ends early", at);
+  fail(AlarmId::IllegalExpressionFormat, std::string("unexpected '") + c + "'", at);
+}
+
+}  // namespace
+
+ParsedFile parseProgramText(std::string_view text, uint32_t fileId, std::string_view stem,
+                            const ParseOptions& options) {
+  return Compiler(text, fileId, stem, options).run();
+}
+
+void resolveStructure(Program& p) {
+  auto structural = [&](const Block& b, AlarmId id, std::string detail) {
+    Alarm a{alarmCode(id), std::string(alarmMessage(id)) + (detail.empty() ? "" : " (" + detail + ")"),
+            b.loc, b.n >= 0 ? std::optional<int64_t>(b.n) : std::nullopt, p.number};
+    p.structural.push_back(std::move(a));
+  };
+  // DO/END pairing: ids 1..3, properly nested, not crossing.
+  std::vector<uint32_t> open;  // While block indices
+  for (uint32_t k = 0; k < p.blocks.size(); ++k) {
+    Block& b = p.blocks[k];
+    b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
+    if (b.kind == BlockKind::While) {
+      if (b.loopId < 1 || b.loopId > 3) {
+        structural(b, AlarmId::IllegalLoopNumber, "DO " + std::to_string(b.loopId));
+        continue;
+      }
+      for (uint32_t o : open)
+        if (p.blocks[o].loopId == b.loopId)
+          structural(b, AlarmId::IllegalLoopNumber, "DO " + std::to_string(b.loopId) + " inside DO " +
+                                                        std::to_string(b.loopId));
+      open.push_back(k);
+    } else if (b.kind == BlockKind::End) {
+      if (b.loopId < 1 || b.loopId > 3) {
+        structural(b, AlarmId::IllegalLoopNumber, "END " + std::to_string(b.loopId));
+        continue;
+      }
+      if (open.empty() || p.blocks[open.back()].loopId != b.loopId) {
+        structural(b, AlarmId::IllegalLoopNumber,
+                   "END " + std::to_string(b.loopId) +
+                       (open.empty() ? " without DO" : " crosses DO " +
+                                                          std::to_string(p.blocks[open.back()].loopId)));
+        continue;
+      }
+      uint32_t w = open.back();
+      open.pop_back();
+      b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
+      b.target = static_cast<int32_t>(w);
+      p.blocks[w].target = static_cast<int32_t>(k + 1);
+    }
+  }
+  for (uint32_t o : open) structural(p.blocks[o], AlarmId::MissingEnd, "DO " + std::to_string(p.blocks[o].loopId));
+
+  // Literal GOTO targets: must exist and must not jump into a loop.
+  for (uint32_t k = 0; k < p.blocks.size(); ++k) {
+    Block& b = p.blocks[k];
+    if ((b.kind != BlockKind::Goto && !(b.kind == BlockKind::If && !b.thenAssign)) || b.gotoLabel < 0)
+      continue;
+    int32_t t = p.findLabel(b.gotoLabel, k);
+    if (t < 0) {
+      structural(b, AlarmId::IllegalMacroSequence, "N" + std::to_string(b.gotoLabel) + " not found");
+      continue;
+    }
+    b.target = t;
+    // The target's enclosing loops must all enclose the GOTO too.
+    for (int32_t l = p.blocks[t].loopParent; l >= 0; l = p.blocks[l].loopParent) {
+      bool enclosesSource = false;
+      for (int32_t s = b.loopParent; s >= 0; s = p.blocks[s].loopParent)
+        if (s == l) enclosesSource = true;
+      if (static_cast<uint32_t>(t) == static_cast<uint32_t>(l)) break;  // jumping to the WHILE itself
+      if (!enclosesSource) {
+        structural(b, AlarmId::IllegalLoopNumber, "GOTO " + std::to_string(b.gotoLabel) + " jumps into a loop");
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace ncvm

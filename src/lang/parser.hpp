@@ -1,0 +1,31 @@
+#pragma once
+// Fanuc program text -> compiled programs (ir.hpp), one pass per file.
+//
+// A block the compiler rejects becomes an Error block: the alarm is raised when execution
+// reaches it, as on the control, and `ncvm check` lists it. Loop and label errors
+// (Program::structural) are found after the whole program is read, before anything runs.
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "lang/ir.hpp"
+
+namespace ncvm {
+
+struct ParseOptions {
+  uint32_t maxLineLength = 0;  // 0 = no limit; longer blocks become PS9004 Error blocks
+  bool eightDigitO = false;    // O numbers up to 99999999 (0i-F/30i option)
+};
+
+struct ParsedFile {
+  std::vector<Program> programs;
+};
+
+// `stem` names the anonymous program of a file that has no O header.
+ParsedFile parseProgramText(std::string_view text, uint32_t fileId, std::string_view stem,
+                            const ParseOptions& options = {});
+
+// Resolves WHILE/DO/END pairs and literal GOTO targets; fills Program::structural.
+void resolveStructure(Program& program);
+
+}  // namespace ncvm

@@ -1,0 +1,77 @@
+#include "lang/program_store.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace ncvm {
+
+std::vector<const Program*> ProgramStore::addText(std::string_view text, const std::string& name) {
+  uint32_t id = files_.add(name);
+  std::string stem = std::filesystem::path(name).stem().string();
+  ParsedFile parsed = parseProgramText(text, id, stem, options_);
+  std::vector<const Program*> added;
+  for (auto& p : parsed.programs) {
+    p.label = p.displayName();
+    programs_.push_back(std::move(p));
+    const Program* prog = &programs_.back();
+    added.push_back(prog);
+    if (prog->number >= 0) {
+      auto [it, fresh] = byNumber_.emplace(prog->number, prog);
+      if (!fresh)
+        warnings_.push_back(fmt::format("{}:{}: {} is also in {}; the first one is used", name,
+                                        prog->loc.line, prog->displayName(),
+                                        files_.name(it->second->loc.file)));
+    }
+    if (!prog->name.empty()) byName_.emplace(prog->name, prog);
+  }
+  return added;
+}
+
+std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
+  std::error_code ec;
+  auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw std::runtime_error(fmt::format("{}: cannot read: {}", path, ec.message()));
+  if (size > maxFileBytes_)
+    throw std::runtime_error(fmt::format("{}: {} bytes is more than limits.max_file_bytes ({})", path,
+                                         size, maxFileBytes_));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot open", path));
+  std::string text(size, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<size_t>(in.gcount()));
+  return addText(text, path);
+}
+
+void ProgramStore::addFolder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + ": not a folder");
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (!e.is_regular_file()) continue;
+    std::string ext = e.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext == ".nc" || ext == ".tap" || ext == ".txt" || ext == ".min" || ext == ".cnc" ||
+        (ext.empty() && e.path().filename().string().rfind('O', 0) == 0))
+      files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) addFile(f.string());
+}
+
+const Program* ProgramStore::byNumber(int32_t number) const {
+  auto it = byNumber_.find(number);
+  return it == byNumber_.end() ? nullptr : it->second;
+}
+
+const Program* ProgramStore::byName(std::string_view name) const {
+  auto it = byName_.find(std::string(name));
+  return it == byName_.end() ? nullptr : it->second;
+}
+
+}  // namespace ncvm

@@ -1,0 +1,45 @@
+#pragma once
+// Every program ncvm can run or call: the files named on the command line, then library
+// folders (--lib), then the bundled macros/ folder. The first program with a number or
+// name wins; later duplicates are reported as warnings.
+#include <deque>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/source.hpp"
+#include "lang/parser.hpp"
+
+namespace ncvm {
+
+class ProgramStore {
+ public:
+  ProgramStore(SourceFiles& files, ParseOptions options, uint64_t maxFileBytes)
+      : files_(files), options_(options), maxFileBytes_(maxFileBytes) {}
+
+  // Loads and compiles a file. Returns its programs in file order. Throws
+  // std::runtime_error when the file cannot be read or is larger than the limit.
+  std::vector<const Program*> addFile(const std::string& path);
+  // Same for text already in memory (tests, the server).
+  std::vector<const Program*> addText(std::string_view text, const std::string& name);
+  // Every program file in a folder (not recursive), in name order.
+  void addFolder(const std::string& dir);
+
+  const Program* byNumber(int32_t number) const;
+  const Program* byName(std::string_view name) const;
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  const std::deque<Program>& programs() const { return programs_; }
+  SourceFiles& files() { return files_; }
+
+ private:
+  SourceFiles& files_;
+  ParseOptions options_;
+  uint64_t maxFileBytes_;
+  std::deque<Program> programs_;  // deque: addresses stay valid as files are added
+  std::unordered_map<int32_t, const Program*> byNumber_;
+  std::unordered_map<std::string, const Program*> byName_;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace ncvm

@@ -1,0 +1,319 @@
+#include "machine/setup.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <charconv>
+#include <toml++/toml.h>
+#include <variant>
+
+namespace ncvm {
+namespace {
+
+// Friendly names of bit parameters, as Fanuc manuals spell them.
+const std::map<std::string, std::string>& parameterAliases() {
+  static const std::map<std::string, std::string> aliases = {
+      {"DPI", "3401#0"}, {"NAT", "6004#0"}, {"LRP", "1401#1"}, {"PRT", "6001#1"},
+      {"TCS", "6001#5"}, {"CCV", "6001#6"}, {"CLV", "6001#7"}, {"SBM", "6000#5"},
+      {"M3B", "3404#7"}, {"TVC", "0000#0"},
+  };
+  return aliases;
+}
+
+bool isParameterNumber(const std::string& key) {
+  size_t i = 0;
+  while (i < key.size() && std::isdigit(static_cast<unsigned char>(key[i]))) ++i;
+  if (i < 4 || i > 5) return false;
+  if (i == key.size()) return true;
+  return key.size() == i + 2 && key[i] == '#' && key[i + 1] >= '0' && key[i + 1] <= '7';
+}
+
+using SettingValue = std::variant<bool, double, std::string, std::vector<double>>;
+
+struct Where {
+  std::string key;
+  int line = 0;
+};
+
+[[noreturn]] void bad(const Where& w, const std::string& why) {
+  throw SetupError(fmt::format("{}: {}", w.key, why), w.key, w.line);
+}
+
+double asNumber(const SettingValue& v, const Where& w) {
+  if (auto* d = std::get_if<double>(&v)) return *d;
+  if (auto* b = std::get_if<bool>(&v)) return *b ? 1.0 : 0.0;
+  bad(w, "expected a number");
+}
+bool asBool(const SettingValue& v, const Where& w) {
+  if (auto* b = std::get_if<bool>(&v)) return *b;
+  if (auto* d = std::get_if<double>(&v)) return *d != 0;
+  bad(w, "expected true or false");
+}
+const std::string& asString(const SettingValue& v, const Where& w) {
+  if (auto* s = std::get_if<std::string>(&v)) return *s;
+  bad(w, "expected a string");
+}
+int64_t asInteger(const SettingValue& v, const Where& w) {
+  double d = asNumber(v, w);
+  if (d != static_cast<double>(static_cast<int64_t>(d))) bad(w, "expected a whole number");
+  return static_cast<int64_t>(d);
+}
+
+void applyControlDefaults(Setup& s) {
+  if (s.control == "16i" || s.control == "18i" || s.control == "21i" || s.control == "0i-C") {
+    s.limits.macroNesting = 4;
+    s.limits.subprogramNesting = 4;
+    s.limits.totalNesting = 8;
+  } else {
+    s.limits.macroNesting = 5;
+    s.limits.subprogramNesting = 10;
+    s.limits.totalNesting = 15;
+  }
+}
+
+// The one place where a setting is interpreted; TOML files and --set both come here.
+void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line) {
+  Where w{key, line};
+  auto dot = key.find('.');
+  std::string head = key.substr(0, dot);
+  std::string rest = dot == std::string::npos ? "" : key.substr(dot + 1);
+
+  if (head == "machine") {
+    if (rest == "kind") {
+      const auto& k = asString(v, w);
+      if (k != "mill" && k != "lathe") bad(w, "expected \"mill\" or \"lathe\"");
+      Setup fresh = defaultSetup(k == "lathe" ? MachineKind::Lathe : MachineKind::Mill);
+      // Kind decides the axes; keep what was already set otherwise.
+      s.kind = fresh.kind;
+      s.axes = fresh.axes;
+    } else if (rest == "control") {
+      s.control = asString(v, w);
+      static const char* known[] = {"0i-F", "0i-D", "30i", "31i", "16i", "18i", "21i", "0i-C"};
+      bool ok = false;
+      for (auto* k : known) ok |= s.control == k;
+      if (!ok) bad(w, "unknown control (0i-F, 0i-D, 30i, 31i, 16i, 18i, 21i, 0i-C)");
+      applyControlDefaults(s);
+    } else if (rest == "gcode_system") {
+      const auto& g = asString(v, w);
+      if (g != "A" && g != "B" && g != "C") bad(w, "expected \"A\", \"B\" or \"C\"");
+      s.gcodeSystem = g[0];
+    } else if (rest == "increment") {
+      const auto& g = asString(v, w);
+      if (g == "IS-A") s.increment = IncrementSystem::IsA;
+      else if (g == "IS-B") s.increment = IncrementSystem::IsB;
+      else if (g == "IS-C") s.increment = IncrementSystem::IsC;
+      else bad(w, "expected \"IS-A\", \"IS-B\" or \"IS-C\"");
+    } else if (rest == "units") {
+      const auto& g = asString(v, w);
+      if (g != "mm" && g != "inch") bad(w, "expected \"mm\" or \"inch\"");
+      s.initialUnit = g == "inch" ? InputUnit::Inch : InputUnit::Mm;
+    } else {
+      bad(w, "unknown key");
+    }
+    return;
+  }
+  if (head == "parameters" || (dot == std::string::npos && (isParameterNumber(key) ||
+                                                             parameterAliases().count(key)))) {
+    std::string p = head == "parameters" ? rest : key;
+    if (auto it = parameterAliases().find(p); it != parameterAliases().end()) p = it->second;
+    if (!isParameterNumber(p)) bad(w, "a parameter is a number like 3401#0 or 3410, or an alias (DPI, NAT, LRP, ...)");
+    s.parameters[p] = asNumber(v, w);
+    return;
+  }
+  if (head == "block_skip") {
+    int n = rest.size() == 1 ? rest[0] - '0' : -1;
+    if (n < 1 || n > 9) bad(w, "block_skip.N with N from 1 to 9");
+    s.blockSkip[static_cast<size_t>(n)] = asBool(v, w);
+    return;
+  }
+  if (head == "switches") {
+    if (rest == "optional_stop") s.optionalStop = asBool(v, w);
+    else bad(w, "unknown key");
+    return;
+  }
+  if (head == "limits") {
+    auto positive = [&](double d) {
+      if (!(d > 0)) bad(w, "must be positive");
+      return d;
+    };
+    if (rest == "max_blocks") s.limits.maxBlocks = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "max_time_s") s.limits.maxTimeSeconds = positive(asNumber(v, w));
+    else if (rest == "max_line_length") s.limits.maxLineLength = static_cast<uint32_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "max_file_bytes") s.limits.maxFileBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "max_trace_bytes") s.limits.maxTraceBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "macro_nesting") s.limits.macroNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "subprogram_nesting") s.limits.subprogramNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "total_nesting") s.limits.totalNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
+    else bad(w, "unknown key");
+    return;
+  }
+  if (head == "clock") {
+    if (rest == "date") s.date = asInteger(v, w);
+    else if (rest == "time") s.time = asInteger(v, w);
+    else bad(w, "unknown key");
+    return;
+  }
+  if (head == "output") {
+    if (rest == "dprnt") s.dprntPath = asString(v, w);
+    else bad(w, "unknown key");
+    return;
+  }
+  if (head == "vars") {
+    std::string num = !rest.empty() && rest[0] == '#' ? rest.substr(1) : rest;
+    int n = 0;
+    auto r = std::from_chars(num.data(), num.data() + num.size(), n);
+    if (r.ec != std::errc() || r.ptr != num.data() + num.size() ||
+        !((n >= 100 && n <= 199) || (n >= 500 && n <= 999)))
+      bad(w, "vars take #100-#199 and #500-#999");
+    s.initialVars[n] = asNumber(v, w);
+    return;
+  }
+  if (head == "axes") {
+    auto d2 = rest.find('.');
+    std::string axis = rest.substr(0, d2);
+    std::string field = d2 == std::string::npos ? "" : rest.substr(d2 + 1);
+    static const std::string names = "XYZABC";
+    if (axis.size() != 1 || names.find(axis[0]) == std::string::npos) bad(w, "axes are X Y Z A B C");
+    AxisConfig& a = s.axes[names.find(axis[0])];
+    a.present = true;
+    if (field == "present") a.present = asBool(v, w);
+    else if (field == "rapid") a.rapidRate = asNumber(v, w);
+    else if (field == "initial") a.initial = asNumber(v, w);
+    else if (field == "rotary") a.rotary = asBool(v, w);
+    else if (field == "diameter") a.diameter = asBool(v, w);
+    else if (field == "reference") {
+      const auto* arr = std::get_if<std::vector<double>>(&v);
+      if (!arr || arr->empty() || arr->size() > 4) bad(w, "expected an array of 1 to 4 numbers (G28, G30 P2..P4)");
+      for (size_t k = 0; k < arr->size(); ++k) a.reference[k] = (*arr)[k];
+    } else {
+      bad(w, "unknown axis key (present, rapid, initial, rotary, diameter, reference)");
+    }
+    return;
+  }
+  bad(w, "unknown key");
+}
+
+void walk(Setup& s, const toml::table& t, const std::string& prefix) {
+  // machine.* first: the kind resets the axes, which later keys may adjust.
+  if (prefix.empty()) {
+    if (auto* m = t.get("machine"); m && m->is_table()) walk(s, *m->as_table(), "machine");
+  }
+  for (const auto& [k, node] : t) {
+    std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (prefix.empty() && k.str() == "machine") continue;
+    int line = static_cast<int>(node.source().begin.line);
+    if (auto* sub = node.as_table()) {
+      walk(s, *sub, key);
+    } else if (auto* arr = node.as_array()) {
+      std::vector<double> nums;
+      for (const auto& e : *arr) {
+        if (auto d = e.value<double>()) nums.push_back(*d);
+        else throw SetupError(key + ": expected an array of numbers", key, line);
+      }
+      applyKey(s, key, nums, line);
+    } else if (auto b = node.value<bool>(); node.is_boolean()) {
+      applyKey(s, key, *b, line);
+    } else if (node.is_number()) {
+      applyKey(s, key, *node.value<double>(), line);
+    } else if (auto str = node.value<std::string>()) {
+      applyKey(s, key, *str, line);
+    } else {
+      throw SetupError(key + ": unsupported value type", key, line);
+    }
+  }
+}
+
+}  // namespace
+
+Series Setup::series() const {
+  if (kind == MachineKind::Mill) return Series::M;
+  return gcodeSystem == 'B' ? Series::TB : gcodeSystem == 'C' ? Series::TC : Series::TA;
+}
+
+double Setup::param(const std::string& key, double fallback) const {
+  auto it = parameters.find(key);
+  return it == parameters.end() ? fallback : it->second;
+}
+
+double Setup::arcTolerance() const {
+  // Parameter 3410 is in least increments (IS-B: 0.001 mm); 0 means the control's default.
+  double p = param("3410", 0);
+  double unit = leastIncrement(increment, InputUnit::Mm);
+  return p > 0 ? p * unit : 0.010;
+}
+
+int Setup::gCodeCall(int g) const {
+  for (int k = 0; k < 10; ++k)
+    if (param(std::to_string(6050 + k), 0) == g && g != 0) return 9010 + k;
+  return -1;
+}
+int Setup::mCodeMacroCall(int m) const {
+  for (int k = 0; k < 10; ++k)
+    if (param(std::to_string(6080 + k), 0) == m && m != 0) return 9020 + k;
+  return -1;
+}
+int Setup::mCodeSubCall(int m) const {
+  for (int k = 0; k < 9; ++k)
+    if (param(std::to_string(6071 + k), 0) == m && m != 0) return 9001 + k;
+  return -1;
+}
+
+int Setup::axisSlot(char name) const {
+  static const std::string names = "XYZABC";
+  auto p = names.find(name);
+  if (p == std::string::npos || !axes[p].present) return -1;
+  return static_cast<int>(p);
+}
+
+Setup defaultSetup(MachineKind kind) {
+  Setup s;
+  s.kind = kind;
+  static const char names[] = "XYZABC";
+  for (int k = 0; k < kMaxAxes; ++k) {
+    s.axes[static_cast<size_t>(k)].name = names[k];
+    s.axes[static_cast<size_t>(k)].rotary = k >= 3;
+  }
+  if (kind == MachineKind::Mill) {
+    for (int k = 0; k < 3; ++k) s.axes[static_cast<size_t>(k)].present = true;
+    s.axes[0].rapidRate = s.axes[1].rapidRate = 36000;
+    s.axes[2].rapidRate = 30000;
+  } else {
+    s.axes[0].present = true;
+    s.axes[0].diameter = true;
+    s.axes[0].rapidRate = 20000;
+    s.axes[2].present = true;
+    s.axes[2].rapidRate = 24000;
+  }
+  applyControlDefaults(s);
+  return s;
+}
+
+Setup loadSetup(const std::string& path) {
+  Setup s = defaultSetup();
+  toml::table t;
+  try {
+    t = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw SetupError(fmt::format("{}:{}:{}: {}", path, e.source().begin.line, e.source().begin.column,
+                                 e.description()),
+                     "", static_cast<int>(e.source().begin.line));
+  }
+  walk(s, t, "");
+  return s;
+}
+
+void applySetting(Setup& setup, const std::string& assignment) {
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) throw SetupError("--set needs KEY=VALUE: " + assignment);
+  std::string key = assignment.substr(0, eq);
+  std::string text = assignment.substr(eq + 1);
+  SettingValue v;
+  double d = 0;
+  auto r = std::from_chars(text.data(), text.data() + text.size(), d);
+  if (text == "true" || text == "false") v = text == "true";
+  else if (r.ec == std::errc() && r.ptr == text.data() + text.size()) v = d;
+  else v = text;
+  applyKey(setup, key, v, 0);
+}
+
+}  // namespace ncvm

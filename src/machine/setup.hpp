@@ -1,0 +1,94 @@
+#pragma once
+// The machine and the job, as a value: control model, parameters, switches, axes, limits,
+// clock and initial variables. Loaded from a TOML file (docs/setup-format.md), then
+// adjusted by --set; every run is reproducible from it.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "canon/events.hpp"
+#include "core/units.hpp"
+#include "exec/gcode_table.hpp"
+
+namespace ncvm {
+
+enum class MachineKind : uint8_t { Mill, Lathe };
+
+struct AxisConfig {
+  char name = 'X';
+  bool present = false;
+  bool rotary = false;
+  bool diameter = false;       // lathe X: programmed and shown as a diameter
+  double rapidRate = 24000.0;  // units/min (deg/min for rotary)
+  std::array<double, 4> reference{};  // G28 / G30 P2..P4 positions, machine coordinates
+  double initial = 0.0;        // machine position at cycle start
+};
+
+struct Limits {
+  uint64_t maxBlocks = 100'000'000;   // runaway guard: blocks executed
+  double maxTimeSeconds = 360'000.0;  // runaway guard: simulated machine time (100 h)
+  uint32_t maxLineLength = 4096;
+  uint64_t maxFileBytes = 512ull << 20;
+  uint64_t maxTraceBytes = 8ull << 30;
+  int macroNesting = 5;       // G65/G66/code-call levels (locals #1-#33 levels 1..n)
+  int subprogramNesting = 10; // M98 levels
+  int totalNesting = 15;      // both together
+};
+
+struct SetupError : std::runtime_error {
+  SetupError(const std::string& what, std::string badKey = {}, int atLine = 0)
+      : std::runtime_error(what), key(std::move(badKey)), line(atLine) {}
+  std::string key;
+  int line;
+};
+
+struct Setup {
+  MachineKind kind = MachineKind::Mill;
+  std::string control = "0i-F";  // 0i-F, 30i, 16i: sets nesting limits and defaults
+  char gcodeSystem = 'A';        // lathes: A, B or C
+  IncrementSystem increment = IncrementSystem::IsB;
+  InputUnit initialUnit = InputUnit::Mm;  // G21 at power-on (machine in mm)
+  std::array<AxisConfig, kMaxAxes> axes{};
+
+  // Fanuc parameters as written: "3401#0" -> 1, "3410" -> 10. Typed views below.
+  std::map<std::string, double> parameters;
+
+  std::array<bool, 10> blockSkip{};  // [1]..[9]: '/' and '/2'..'/9' switches
+  bool optionalStop = true;          // M01 stops (recorded as a message, the run goes on)
+  Limits limits;
+  int64_t date = 20260101;  // #3011 YYYYMMDD
+  int64_t time = 80000;     // #3012 HHMMSS
+  std::string dprntPath;    // DPRNT/BPRNT output; empty = <state or program>.out beside it
+  std::map<int, double> initialVars;  // #100-#199, #500-#999 at cycle start
+
+  Series series() const;
+  double param(const std::string& key, double fallback) const;
+  bool bit(const std::string& key) const { return param(key, 0) != 0; }
+  // Common parameter views.
+  bool dpi() const { return bit("3401#0"); }   // calculator-type decimal input
+  bool nat() const { return bit("6004#0"); }   // ASIN/ATAN range -90..90 / -180..180
+  bool lrp() const { return bit("1401#1"); }   // linear (not dog-leg) rapids
+  bool prt() const { return bit("6001#1"); }   // DPRNT: no leading blanks
+  bool tcs() const { return bit("6001#5"); }   // T code calls O9000
+  double arcTolerance() const;                  // parameter 3410, in mm
+  // Program number called by G code g through 6050-6059 (O9010-O9019), or -1.
+  int gCodeCall(int g) const;
+  int mCodeMacroCall(int m) const;  // 6080-6089 -> O9020-O9029
+  int mCodeSubCall(int m) const;    // 6071-6079 -> O9001-O9009
+
+  int axisSlot(char name) const;  // -1 if the machine has no such axis
+};
+
+// Defaults for a machine kind: axes, rapid rates, control limits.
+Setup defaultSetup(MachineKind kind = MachineKind::Mill);
+// Loads a setup file. Throws SetupError with the key and line.
+Setup loadSetup(const std::string& path);
+// Applies "KEY=VALUE": a Fanuc parameter ("3401#0=1", "DPI=1") or a setup key
+// ("machine.kind=lathe", "block_skip.1=true", "limits.max_blocks=50", "vars.#500=2").
+void applySetting(Setup& setup, const std::string& assignment);
+
+}  // namespace ncvm

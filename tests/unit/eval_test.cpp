@@ -1,0 +1,58 @@
+#include <gtest/gtest.h>
+
+#include "app/session.hpp"
+
+using namespace ncvm;
+
+namespace {
+// Runs a program and returns variable #n from the state.
+double var(const std::string& program, int n, Setup setup = defaultSetup()) {
+  Session s(setup);
+  s.addProgramText(program, "t.nc");
+  auto r = s.run(nullptr);
+  EXPECT_TRUE(r.state["alarm"].is_null()) << r.state["alarm"].dump();
+  return r.state["vars"]["#" + std::to_string(n)].get<double>();
+}
+std::string alarmOf(const std::string& program) {
+  Session s(defaultSetup());
+  s.addProgramText(program, "t.nc");
+  auto r = s.run(nullptr);
+  return r.alarm ? r.alarm->code : "";
+}
+}  // namespace
+
+TEST(Eval, PrecedenceFanucGrouping) {
+  EXPECT_DOUBLE_EQ(var("O1\n#100=1+2*3\nM30\n", 100), 7);
+  EXPECT_DOUBLE_EQ(var("O1\n#100=6 OR 1 AND 3\nM30\n", 100), 7);  // AND binds like *
+  EXPECT_DOUBLE_EQ(var("O1\n#100=10-4-3\nM30\n", 100), 3);
+}
+
+TEST(Eval, TrigExactAtQuadrants) {
+  EXPECT_DOUBLE_EQ(var("O1\n#100=COS[90]\nM30\n", 100), 0.0);
+  EXPECT_EQ(alarmOf("O1\n#100=TAN[90]\nM30\n"), "PS0112");
+}
+
+TEST(Eval, AtanRangeFollowsNat) {
+  EXPECT_DOUBLE_EQ(var("O1\n#100=ATAN[-1]/[-1]\nM30\n", 100), 225);
+  ncvm::Setup nat = defaultSetup();
+  applySetting(nat, "NAT=1");
+  EXPECT_DOUBLE_EQ(var("O1\n#100=ATAN[-1]/[-1]\nM30\n", 100, nat), -135);
+}
+
+TEST(Eval, RoundFixFup) {
+  EXPECT_DOUBLE_EQ(var("O1\n#100=ROUND[-2.5]\nM30\n", 100), -3);
+  EXPECT_DOUBLE_EQ(var("O1\n#100=FIX[-1.7]\nM30\n", 100), -1);
+  EXPECT_DOUBLE_EQ(var("O1\n#100=FUP[-1.2]\nM30\n", 100), -2);
+}
+
+TEST(Eval, DomainAlarms) {
+  EXPECT_EQ(alarmOf("O1\n#100=SQRT[-1]\nM30\n"), "PS0119");
+  EXPECT_EQ(alarmOf("O1\n#100=1/0\nM30\n"), "PS0112");
+  EXPECT_EQ(alarmOf("O1\n#100=LN[0]\nM30\n"), "PS0119");
+  EXPECT_EQ(alarmOf("O1\n#100=EXP[1000]\nM30\n"), "PS0111");
+}
+
+TEST(Eval, VacantOnlyDistinguishedByEqNe) {
+  EXPECT_DOUBLE_EQ(var("O1\n#100=0\nIF[#1EQ0]GOTO5\n#100=1\nN5M30\n", 100), 1);
+  EXPECT_DOUBLE_EQ(var("O1\n#100=0\nIF[#1GE0]GOTO5\n#100=1\nN5M30\n", 100), 0);
+}

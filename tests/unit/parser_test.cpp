@@ -1,0 +1,77 @@
+#include <gtest/gtest.h>
+
+#include "lang/parser.hpp"
+
+using namespace ncvm;
+
+namespace {
+Program one(const char* text) {
+  auto f = parseProgramText(text, 0, "t");
+  EXPECT_EQ(f.programs.size(), 1u);
+  return f.programs.front();
+}
+}  // namespace
+
+TEST(Parser, ProgramHeaderAndWords) {
+  Program p = one("%\nO0012 (TITLE)\nN10 G01 X1.5 Y-2 F100.\nM30\n%\n");
+  EXPECT_EQ(p.number, 12);
+  ASSERT_EQ(p.blocks.size(), 2u);
+  EXPECT_EQ(p.blocks[0].n, 10);
+  EXPECT_EQ(p.blocks[0].nWords, 4);
+  const Word& x = p.words[p.blocks[0].firstWord + 1];
+  EXPECT_EQ(x.letter, 'X');
+  EXPECT_DOUBLE_EQ(x.value, 1.5);
+  EXPECT_TRUE(x.flags & kHasPoint);
+  const Word& y = p.words[p.blocks[0].firstWord + 2];
+  EXPECT_FALSE(y.flags & kHasPoint);
+  EXPECT_EQ(p.blocks[0].loc.line, 3u);
+}
+
+TEST(Parser, LowerCaseAddressIsAnErrorBlock) {
+  Program p = one("O1\ng01 X1.\n");
+  ASSERT_EQ(p.blocks.size(), 1u);
+  EXPECT_EQ(p.blocks[0].kind, BlockKind::Error);
+  EXPECT_EQ(p.errors[0].code, "PS0009");
+}
+
+TEST(Parser, DecimalPointForbiddenInP) {
+  Program p = one("O1\nG04 P1.\n");
+  EXPECT_EQ(p.errors.at(0).code, "PS0007");
+}
+
+TEST(Parser, NcAndMacroInOneBlock) {
+  Program p = one("O1\nG01 X10 #1=5\n");
+  EXPECT_EQ(p.errors.at(0).code, "PS0127");
+}
+
+TEST(Parser, WhileEndResolved) {
+  Program p = one("O1\n#1=0\nWHILE[#1LT3]DO1\n#1=#1+1\nEND1\nM30\n");
+  ASSERT_EQ(p.blocks[1].kind, BlockKind::While);
+  EXPECT_EQ(p.blocks[1].target, 4);  // the block after END1
+  EXPECT_EQ(p.blocks[3].target, 1);  // END jumps back to WHILE
+  EXPECT_TRUE(p.structural.empty());
+}
+
+TEST(Parser, MissingEndIsStructural) {
+  Program p = one("O1\nWHILE[1LT2]DO1\nM30\n");
+  ASSERT_FALSE(p.structural.empty());
+  EXPECT_EQ(p.structural[0].code, "PS0124");
+}
+
+TEST(Parser, TooManyBrackets) {
+  Program p = one("O1\n#1=[[[[[[1]]]]]]\n");
+  EXPECT_EQ(p.errors.at(0).code, "PS0118");
+  Program ok = one("O1\n#1=[[[[[1]]]]]\n");
+  EXPECT_TRUE(ok.errors.empty());
+}
+
+TEST(Parser, SemicolonEndsABlock) {
+  Program p = one("O1;\nG00 X1.; G01 X2. F1.;\n");
+  EXPECT_EQ(p.blocks.size(), 2u);
+}
+
+TEST(Parser, PercentWithProgramOnSameLine) {
+  Program p = one("%O1200(TOKARKA)\nN10 G21\n%\n");
+  EXPECT_EQ(p.number, 1200);
+  EXPECT_EQ(p.blocks.size(), 1u);
+}
