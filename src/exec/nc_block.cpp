@@ -244,7 +244,7 @@ void Executor::execNc(const Block& b) {
     bool lathe50S = (code == 500 && series_ == Series::TA) || (code == 920 && lathe_ && series_ != Series::TA);
     if (info.status == GStatus::NotYet && !(lathe50S && !w.any("XZUWYC"))) {
       AlarmError e(AlarmId::ImproperGCode,
-                   fmt::format("G{:02d}{}: {} is not supported by ncvm yet", code / 10,
+                   fmt::format("G{:02d}{} ({}) is not supported by ncvm yet", code / 10,
                                code % 10 ? fmt::format(".{}", code % 10) : "", info.meaning));
       e.col = w.gcol[static_cast<size_t>(k)];
       throw e;
