@@ -1,5 +1,7 @@
 #include "app/session.hpp"
 
+#include "app/machine_state.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -67,12 +69,19 @@ namespace {
 nlohmann::json axes3(const AxisArray& a) { return nlohmann::json::array({a[0], a[1], a[2]}); }
 }  // namespace
 
-Session::Result Session::run(EventSink* sink) {
+Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState) {
   Result r;
   if (!main_) throw std::runtime_error("no program to run");
   EventSink none;
   Executor exec(setup_, store_, sink ? *sink : none);
+  if (machineState) {
+    MachineMemory mem = exec.memory();
+    memoryFromJson(*machineState, setup_, mem);
+    exec.memory() = mem;
+    exec.restartFromMemory();
+  }
   r.end = exec.run(*main_);
+  r.machineState = memoryToJson(exec.memory(), setup_);
   r.alarm = exec.alarm();
   r.stats = exec.stats();
   r.warnings = exec.warnings();
@@ -101,12 +110,8 @@ Session::Result Session::run(EventSink* sink) {
   nlohmann::json vars = nlohmann::json::object();
   for (const auto& [n, v] : exec.userVariables()) vars["#" + std::to_string(n)] = v;
   s["vars"] = vars;
-  // Offsets are all zero until the machine-model issue gives them a setup table.
-  nlohmann::json work = nlohmann::json::object();
-  for (const char* name : {"EXT", "G54", "G55", "G56", "G57", "G58", "G59"})
-    work[name] = nlohmann::json::array({0.0, 0.0, 0.0});
-  s["work_offsets"] = work;
-  s["tool_offsets"] = nlohmann::json::object();
+  s["work_offsets"] = workOffsetsJson(exec.memory(), setup_, true);
+  s["tool_offsets"] = toolOffsetsJson(exec.memory(), setup_);
   s["cycle_time"] = r.stats.time;
   s["blocks"] = r.stats.blocks;
   s["moves"] = r.stats.moves;

@@ -41,9 +41,12 @@ class Session {
     std::vector<Warning> warnings;
     nlohmann::json state;
     std::string printed;  // DPRNT/BPRNT output
+    nlohmann::json machineState;
   };
-  // Runs the main program; `sink` receives every event (may be nullptr).
-  Result run(EventSink* sink);
+  // Runs the main program; `sink` receives every event (may be nullptr). With a
+  // machine state (memoryToJson format) the control starts from it instead of the setup's
+  // offsets and #500-#999; Result::machineState is what it keeps afterwards.
+  Result run(EventSink* sink, const nlohmann::json* machineState = nullptr);
 
   // Everything found without running: syntax errors, loop and label errors and the
   // decimal-point and duplicate-word warnings, for the programs of the given files.

@@ -94,6 +94,14 @@ struct OffsetEvent {
   double value = 0;
 };
 
+// G31: where the skip signal came (or that it never did).
+struct SkipEvent {
+  EventOrigin at;
+  bool hit = false;
+  AxisArray position{};   // latched position, work coordinates (#5061-)
+  AxisArray mposition{};  // machine coordinates
+};
+
 class EventSink {
  public:
   virtual ~EventSink() = default;
@@ -106,6 +114,7 @@ class EventSink {
   virtual void onCoolant(const CoolantEvent&) {}
   virtual void onAux(const AuxEvent&) {}
   virtual void onOffset(const OffsetEvent&) {}
+  virtual void onSkip(const SkipEvent&) {}
 };
 
 // Forwards every event to several sinks in order.
@@ -121,6 +130,7 @@ class FanoutSink final : public EventSink {
   void onCoolant(const CoolantEvent& e) override { for (auto* s : sinks_) s->onCoolant(e); }
   void onAux(const AuxEvent& e) override { for (auto* s : sinks_) s->onAux(e); }
   void onOffset(const OffsetEvent& e) override { for (auto* s : sinks_) s->onOffset(e); }
+  void onSkip(const SkipEvent& e) override { for (auto* s : sinks_) s->onSkip(e); }
 
  private:
   std::vector<EventSink*> sinks_;

@@ -5,8 +5,10 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
+#include "app/machine_state.hpp"
 #include "app/session.hpp"
 #include "core/alarm.hpp"
 #include "exec/gcode_table.hpp"
@@ -61,7 +63,7 @@ std::string hms(double seconds) {
 }
 
 int runCommand(const CommonOptions& o, const std::string& tracePath, const std::string& statePath,
-               const std::string& outputPath, bool quiet) {
+               const std::string& outputPath, const std::string& machineStatePath, bool quiet) {
   Session session(makeSetup(o));
   loadPrograms(session, o);
   for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
@@ -72,7 +74,20 @@ int runCommand(const CommonOptions& o, const std::string& tracePath, const std::
     traceFile = std::make_unique<AtomicFile>(tracePath);
     trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(), session.setup().limits.maxTraceBytes);
   }
-  Session::Result r = session.run(trace.get());
+  nlohmann::json memory;
+  bool haveMemory = false;
+  if (!machineStatePath.empty() && std::filesystem::exists(machineStatePath)) {
+    std::ifstream in(machineStatePath);
+    try {
+      memory = nlohmann::json::parse(in);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(machineStatePath + ": " + e.what());
+    }
+    haveMemory = true;
+  }
+  Session::Result r = session.run(trace.get(), haveMemory ? &memory : nullptr);
+  // The control keeps its memory whatever way the run ended, alarms included.
+  if (!machineStatePath.empty()) writeFileAtomic(machineStatePath, r.machineState.dump(2) + "\n");
   if (trace) {
     trace->flush();
     trace.reset();
@@ -151,13 +166,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   CommonOptions runOpts;
-  std::string tracePath, statePath, outputPath;
+  std::string tracePath, statePath, outputPath, machineStatePath;
   bool quiet = false;
   auto* run = app.add_subcommand("run", "run a program and report what the machine does");
   addCommon(run, runOpts);
   run->add_option("--trace", tracePath, "write the event trace (JSON Lines)");
   run->add_option("--state", statePath, "write the final state (JSON)");
   run->add_option("--output", outputPath, "file for DPRNT/BPRNT output");
+  run->add_option("--machine-state", machineStatePath,
+                  "persistent memory (#500-#999, offsets, part counters): loaded if it exists, saved after the run");
   run->add_flag("-q,--quiet", quiet, "print only alarms");
 
   CommonOptions checkOpts;
@@ -180,7 +197,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   try {
-    if (run->parsed()) return runCommand(runOpts, tracePath, statePath, outputPath, quiet);
+    if (run->parsed()) return runCommand(runOpts, tracePath, statePath, outputPath, machineStatePath, quiet);
     if (check->parsed()) return checkCommand(checkOpts, json);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();

@@ -76,6 +76,9 @@ const std::vector<AlarmInfo>& alarmTable() {
                                                   "written."},
       {AlarmId::LineTooLong, "LINE TOO LONG", "ncvm: a block longer than limits.max_line_length."},
       {AlarmId::ProgramTooLarge, "PROGRAM TOO LARGE", "ncvm: a file larger than limits.max_file_bytes."},
+      {AlarmId::SkipNotReceived, "SKIP SIGNAL NOT RECEIVED",
+       "ncvm: a G31 touched nothing while probe.miss_alarm is set (a real control ends the move "
+       "normally; the option makes a missed probe visible)."},
       {AlarmId::TraceLimit, "TRACE LIMIT REACHED", "ncvm: the trace grew past limits.max_trace_bytes."},
   };
   return table;

@@ -59,6 +59,7 @@ enum class AlarmId : uint16_t {
   LineTooLong = 9004,
   ProgramTooLarge = 9005,
   TraceLimit = 9006,
+  SkipNotReceived = 9010,
 };
 
 struct AlarmInfo {

@@ -49,8 +49,23 @@ Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
     if (!a.present) continue;
     machine_[static_cast<size_t>(k)] = lengthNm(a.initial, true, k) / (a.diameter ? 2 : 1);
   }
-  programmed_ = machine_;
-  for (const auto& [n, v] : setup.initialVars) writeVar(n, Value::num(v));
+  initMemoryFromSetup();
+  for (const auto& [n, v] : setup.initialVars)
+    if (n < 500) writeVar(n, Value::num(v));
+  // Solids in a work frame are placed with the offsets the run starts with.
+  probeWorld_ = SolidWorld::fromSetup(setup, [&](int index) {
+    Vec3 v{};
+    for (size_t k = 0; k < 3; ++k)
+      v[k] = static_cast<double>(mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(index)][k]) / 1e6;
+    return v;
+  });
+  recomputeOffset();
+  for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+}
+
+void Executor::restartFromMemory() {
+  recomputeOffset();
+  for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
 }
 
 Executor::~Executor() = default;
@@ -316,7 +331,7 @@ std::vector<std::pair<int, double>> Executor::userVariables() const {
   for (int k = 0; k < 100; ++k)
     if (!common100_[static_cast<size_t>(k)].null) out.emplace_back(100 + k, common100_[static_cast<size_t>(k)].v);
   for (int k = 0; k < 500; ++k)
-    if (!common500_[static_cast<size_t>(k)].null) out.emplace_back(500 + k, common500_[static_cast<size_t>(k)].v);
+    if (!mem_.common500[static_cast<size_t>(k)].null) out.emplace_back(500 + k, mem_.common500[static_cast<size_t>(k)].v);
   return out;
 }
 

@@ -17,7 +17,9 @@
 #include "exec/gcode_table.hpp"
 #include "lang/ir.hpp"
 #include "lang/program_store.hpp"
+#include "machine/offsets.hpp"
 #include "machine/setup.hpp"
+#include "sim/probe_world.hpp"
 
 namespace ncvm {
 
@@ -78,6 +80,14 @@ class Executor {
   AxisArray machinePosition() const;  // program units
   // Non-vacant level-0 locals and common variables, for the state file.
   std::vector<std::pair<int, double>> userVariables() const;
+  // The control's persistent memory (offsets, #500-#999, part counters). Replace it before
+  // run() to start from a saved machine state; read it after run() to save one.
+  MachineMemory& memory() { return mem_; }
+  const MachineMemory& memory() const { return mem_; }
+  // Offsets in the setup's units (mm or inch; lathe X as a diameter), for reports.
+  AxisArray workOffsetValues(int index) const;
+  // Call after replacing memory() so the current offsets follow it.
+  void restartFromMemory();
   // What DPRNT/BPRNT wrote; the caller saves it (atomically) where the setup says.
   const std::string& printed() const { return printed_; }
 
@@ -116,9 +126,8 @@ class Executor {
   std::array<std::array<Value, 33>, kMaxLevels> callArgs_{};  // for L repeats
   std::array<std::array<double, 33>, kMaxLevels> callArgScale_{};
   std::array<Value, 100> common100_{};
-  std::array<Value, 500> common500_{};
   double timerMsOffset_ = 0, timerHourOffset_ = 0;
-  double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0, parts3901_ = 0, parts3902_ = 0;
+  double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0;
 
   // ---- modal calls (G66) ----
   struct ModalCall {
@@ -132,7 +141,13 @@ class Executor {
   // ---- machine state ----
   ModalState modal_;
   std::array<int64_t, kMaxAxes> machine_{};  // nm / micro-degree, physical (lathe X radius)
-  std::array<int64_t, kMaxAxes> offset_{};   // machine = work + offset_
+  std::array<int64_t, kMaxAxes> offset_{};   // machine = work + offset_ (sum of the below)
+  MachineMemory mem_;
+  int workIndex_ = kWorkG54;                    // selected work offset table
+  std::array<int64_t, kMaxAxes> g52_{}, g92_{}; // local system and G92/G50 shift
+  std::array<int64_t, kMaxAxes> toolShift_{};   // tool length (mill) or tool offset (lathe)
+  std::unique_ptr<SolidWorld> probeWorld_;
+  std::string eventName_;                       // storage behind OffsetEvent::name
   std::array<int64_t, kMaxAxes> programmed_{};  // work position of the last block end (#5001)
   std::array<int64_t, kMaxAxes> skip_{};
   std::array<int64_t, kMaxAxes> g28Mid_{};
@@ -205,6 +220,24 @@ class Executor {
   void returnFromReference(const Words& w);
   void machinePositioning(const Words& w);
   void advanceTime(double seconds);
+
+  // coords.cpp
+  void initMemoryFromSetup();
+  void recomputeOffset();
+  int64_t offsetNm(double v, bool point, int slot) const;  // offset value -> nm (radius)
+  void writeWorkOffset(int index, int slot, int64_t nm, bool add);
+  void writeToolOffset(int row, int field, bool wear, int64_t nm, bool add);
+  void setTip(int row, int tip);
+  void applyToolShift();
+  void programmableDataInput(const Words& w);  // G10
+  void localCoordinates(const Words& w);       // G52
+  void coordinateSetting(const Words& w);      // G92 / lathe G50
+  bool offsetVariable(int64_t n, Value* read, const Value* write);
+  double cssRpmAt(int64_t xMachine) const;
+  void checkStroke(const std::array<int64_t, kMaxAxes>& toMachine);
+
+  // probe.cpp
+  void skipMove(const Words& w);
 
   // print.cpp
   void print(const Block& b);

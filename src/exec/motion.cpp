@@ -99,13 +99,7 @@ double Executor::effectiveFeed() {
   if (modal_.feed <= 0) throw AlarmError(AlarmId::FeedZero, "no F programmed");
   if (!modal_.feedPerRev) return modal_.feed;
   double rpm = rpm_;
-  if (modal_.css) {
-    // Constant surface speed: rpm from the current diameter, clamped by G50/G92 S.
-    double dia = std::fabs(toProgramUnits(machine_[0] - offset_[0], 0, true));
-    double perMin = modal_.unit == InputUnit::Inch ? 12.0 : 1000.0;
-    rpm = dia > 0 ? modal_.speed * perMin / (std::numbers::pi * dia) : spindleClamp_;
-    if (spindleClamp_ > 0) rpm = std::min(rpm, spindleClamp_);
-  }
+  if (modal_.css) rpm = cssRpmAt(machine_[0]);  // constant surface speed: rpm at the start
   if (rpm <= 0 && !warnedRevFeed_) {
     warnedRevFeed_ = true;
     warn("W004", "feed per revolution with no spindle speed: the machine would wait; time counted as 0");
@@ -128,10 +122,19 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
   else stats_.feedLength += e.length;
   advanceTime(e.time);
   sink_.onMove(e);
+  if (modal_.css && spindleOn_) {
+    // Constant surface speed: the spindle follows X; report the rpm at the move's end.
+    double rpm = cssRpmAt(toMachine[0]);
+    if (rpm != rpm_) {
+      rpm_ = rpm;
+      sink_.onSpindle(SpindleEvent{origin_, modal_.lastM == 4 ? SpindleDir::Ccw : SpindleDir::Cw, rpm_});
+    }
+  }
 }
 
 void Executor::rapidMachine(const std::array<int64_t, kMaxAxes>& toM, uint32_t mask) {
   (void)mask;
+  checkStroke(toM);
   std::array<int64_t, kMaxAxes> fromM = machine_;
   MoveEvent e;
   e.mode = MoveMode::Rapid;
@@ -194,6 +197,7 @@ void Executor::moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode 
     rapidMachine(toM, mask);
     return;
   }
+  checkStroke(toM);
   MoveEvent e;
   e.mode = mode;
   e.feed = effectiveFeed();
@@ -290,6 +294,7 @@ void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Word
   for (int k = 0; k < 3; ++k) e.center[static_cast<size_t>(k)] = toProgramUnits(centerW[static_cast<size_t>(k)], k, true);
   std::array<int64_t, kMaxAxes> toM, fromM = machine_;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = targetWork[k] + offset_[k];
+  checkStroke(toM);
   programmed_ = targetWork;
   emitMove(e, fromM, toM);
   machine_ = toM;

@@ -241,8 +241,7 @@ void Executor::execNc(const Block& b) {
   for (int k = 0; k < w.ng; ++k) {
     int code = w.g[static_cast<size_t>(k)];
     const GCodeInfo& info = *gInfo_[static_cast<size_t>(code)];
-    bool lathe50S = (code == 500 && series_ == Series::TA) || (code == 920 && lathe_ && series_ != Series::TA);
-    if (info.status == GStatus::NotYet && !(lathe50S && !w.any("XZUWYC"))) {
+    if (info.status == GStatus::NotYet) {
       AlarmError e(AlarmId::ImproperGCode,
                    fmt::format("G{:02d}{} ({}) is not supported by ncvm yet", code / 10,
                                code % 10 ? fmt::format(".{}", code % 10) : "", info.meaning));
@@ -253,7 +252,28 @@ void Executor::execNc(const Block& b) {
     if (info.group == 0) oneShot = code;
     else applyModalG(code, info);
   }
+  int16_t workBefore = modal_.g[14], lengthBefore = modal_.g[8];
+  int32_t hBefore = modal_.hOffset;
   deriveModal();
+  if (modal_.g[14] != workBefore || (w.has('P') && modal_.g[14] >= 540 && oneShot < 0 && [&] {
+        for (int k = 0; k < w.ng; ++k)
+          if (w.g[static_cast<size_t>(k)] / 10 == 54) return true;
+        return false;
+      }())) {
+    // G54-G59, G54.1 Pn (and the 30i spelling G54 Pn) select a work offset table.
+    int code = modal_.g[14];
+    if (code == 541 || (code == 540 && w.has('P'))) {
+      int p = w.has('P') ? integerWord(w, 'P') : 1;
+      if (p < 1 || p > 300) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("G54.1 P{}", p));
+      modal_.g[14] = 541;
+      modal_.workP = p;
+      workIndex_ = kWorkP1 + p - 1;
+    } else {
+      workIndex_ = kWorkG54 + (code - 540) / 10;
+    }
+    recomputeOffset();
+    for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+  }
 
   if (w.has('F')) {
     double fv = w.value('F');
@@ -264,18 +284,20 @@ void Executor::execNc(const Block& b) {
   }
   if (w.has('E')) modal_.e = w.value('E');
   if (w.has('B') && setup_.axisSlot('B') < 0) modal_.b = w.value('B');
-  if (w.has('H')) modal_.hOffset = integerWord(w, 'H');
+  if (w.has('H') && !lathe_) {
+    int h = integerWord(w, 'H');
+    if (h < 0 || h >= kToolRows) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("H{}", h));
+    modal_.hOffset = h;
+  }
+  if (!lathe_ && (modal_.g[8] != lengthBefore || modal_.hOffset != hBefore)) applyToolShift();
   if (w.has('D')) modal_.dOffset = integerWord(w, 'D');
-  if (oneShot == 500 || oneShot == 920) {
+  if (lathe_ && (oneShot == 500 || oneShot == 920)) {
     // Lathe G50 S / G92 S: maximum spindle speed for constant surface speed.
     spindleClamp_ = w.has('S') ? integerWord(w, 'S') : spindleClamp_;
   } else if (w.has('S')) {
-    if (w.hasPoint('S') && !(w.point & ~w.point)) {
-      // A literal S with a point was already refused by the compiler; variables round.
-    }
     modal_.speed = integerWord(w, 'S');
     double before = rpm_;
-    rpm_ = modal_.speed;
+    rpm_ = modal_.css ? cssRpmAt(machine_[0]) : modal_.speed;
     if (spindleOn_ && rpm_ != before) {
       sink_.onSpindle(SpindleEvent{origin_, modal_.lastM == 4 ? SpindleDir::Ccw : SpindleDir::Cw, rpm_});
     }
@@ -289,6 +311,7 @@ void Executor::execNc(const Block& b) {
       return;
     }
     sink_.onTool(ToolEvent{origin_, lathe_ ? modal_.tool / 100 : modal_.tool, false});
+    if (lathe_) applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
   }
   auxFunctions(w);
   if (ended_) return;
@@ -313,9 +336,20 @@ void Executor::execNc(const Block& b) {
       machinePositioning(w);
       moved = true;
       break;
+    case 100:
+      programmableDataInput(w);
+      break;
+    case 520:
+      localCoordinates(w);
+      break;
     case 500:
     case 920:
-      break;  // lathe spindle clamp, handled above
+      coordinateSetting(w);  // a lathe G50/G92 with only S was the spindle clamp above
+      break;
+    case 310:
+      skipMove(w);
+      moved = true;
+      break;
     default: {
       bool arc = modal_.motion == 20 || modal_.motion == 30;
       bool hasAxes = axisTargets(w, target, mask);
@@ -347,7 +381,7 @@ void Executor::auxFunctions(Words& w) {
       case 4:
         spindleOn_ = true;
         modal_.lastM = m;
-        rpm_ = modal_.speed;
+        rpm_ = modal_.css ? cssRpmAt(machine_[0]) : modal_.speed;
         sink_.onSpindle(SpindleEvent{origin_, m == 3 ? SpindleDir::Cw : SpindleDir::Ccw, rpm_});
         break;
       case 5:
@@ -402,7 +436,7 @@ void Executor::programControl(Words& w, bool moved) {
       if (f.kind == FrameKind::Main || true) {
         ended_ = true;
         endReason_ = m == 2 ? EndReason::M02 : EndReason::M30;
-        if (m == 30) parts3901_ += 1;  // part count (parameter 6700 counts M30 by default)
+        if (m == 30) mem_.parts3901 += 1;  // part count (parameter 6700 counts M30 by default)
         return;
       }
     }

@@ -21,7 +21,7 @@ int Executor::axisByNumber(int n) const {
 Value Executor::readVar(int64_t n) {
   if (n >= 1 && n <= 33) return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
   if (n >= 100 && n <= 199) return common100_[static_cast<size_t>(n - 100)];
-  if (n >= 500 && n <= 999) return common500_[static_cast<size_t>(n - 500)];
+  if (n >= 500 && n <= 999) return mem_.common500[static_cast<size_t>(n - 500)];
   if (n == 0) return Value::vacant();
   if (n >= 1000) return readSystem(n);
   throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
@@ -40,20 +40,13 @@ void Executor::writeVar(int64_t n, Value v) {
     return;
   }
   if (n >= 500 && n <= 999) {
-    common500_[static_cast<size_t>(n - 500)] = v;
+    mem_.common500[static_cast<size_t>(n - 500)] = v;
     return;
   }
   if (n == 0) throw AlarmError(AlarmId::WriteProtectedVariable, "#0");
   if (n >= 1000) return writeSystem(n, v);
   throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
 }
-
-namespace {
-[[noreturn]] void notYet(int64_t n, const char* what) {
-  throw AlarmError(AlarmId::VariableOutOfRange,
-                   fmt::format("#{}: {} are not supported by ncvm yet", n, what));
-}
-}  // namespace
 
 Value Executor::readSystem(int64_t n) {
   auto posVar = [&](int64_t base, const std::array<int64_t, kMaxAxes>& nm, bool work) -> Value {
@@ -70,7 +63,7 @@ Value Executor::readSystem(int64_t n) {
     return posVar(5040, work, true);
   }
   if (n >= 5061 && n <= 5080) return posVar(5060, skip_, true);
-  if (n >= 5081 && n <= 5100) return Value::num(0.0);  // tool length offset per axis: none yet
+  if (n >= 5081 && n <= 5100) return posVar(5080, toolShift_, false);
   if (n >= 5101 && n <= 5120) return Value::num(0.0);  // servo deviation: none in a simulation
   if (n >= 4001 && n <= 4030) return Value::num(modal_.g[static_cast<size_t>(n - 4000)] / 10.0);
   if (n >= 4201 && n <= 4230) return Value::num(modal_.g[static_cast<size_t>(n - 4200)] / 10.0);
@@ -109,17 +102,16 @@ Value Executor::readSystem(int64_t n) {
       secs %= 86400;
       return Value::num(static_cast<double>(secs / 3600 * 10000 + secs / 60 % 60 * 100 + secs % 60));
     }
-    case 3901: return Value::num(parts3901_);
-    case 3902: return Value::num(parts3902_);
+    case 3901: return Value::num(mem_.parts3901);
+    case 3902: return Value::num(mem_.parts3902);
     case 4000: {
       const Program* main = frames_.front().prog;
       return Value::num(main->number >= 0 ? main->number : 0);
     }
     default: break;
   }
-  if ((n >= 2001 && n <= 2999) || (n >= 10001 && n <= 13999)) notYet(n, "tool offsets");
-  if ((n >= 5201 && n <= 5340) || (n >= 7001 && n <= 7999) || (n >= 14001 && n <= 19988))
-    notYet(n, "work offsets");
+  Value out;
+  if (offsetVariable(n, &out, nullptr)) return out;
   throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
 }
 
@@ -143,16 +135,14 @@ void Executor::writeSystem(int64_t n, Value v) {
       sink_.onMessage(MessageEvent{origin_, comment, "#3006"});
       return;
     }
-    case 3901: parts3901_ = v.asNumber(); return;
-    case 3902: parts3902_ = v.asNumber(); return;
+    case 3901: mem_.parts3901 = v.asNumber(); return;
+    case 3902: mem_.parts3902 = v.asNumber(); return;
     default: break;
   }
   if (n == 3007 || n == 3011 || n == 3012 || n == 4000 || (n >= 4001 && n <= 4330) ||
       (n >= 5001 && n <= 5120))
     throw AlarmError(AlarmId::WriteProtectedVariable, fmt::format("#{}", n));
-  if ((n >= 2001 && n <= 2999) || (n >= 10001 && n <= 13999)) notYet(n, "tool offsets");
-  if ((n >= 5201 && n <= 5340) || (n >= 7001 && n <= 7999) || (n >= 14001 && n <= 19988))
-    notYet(n, "work offsets");
+  if (offsetVariable(n, nullptr, &v)) return;
   throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
 }
 

@@ -181,13 +181,131 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     else if (field == "initial") a.initial = asNumber(v, w);
     else if (field == "rotary") a.rotary = asBool(v, w);
     else if (field == "diameter") a.diameter = asBool(v, w);
+    else if (field == "min") a.min = asNumber(v, w);
+    else if (field == "max") a.max = asNumber(v, w);
     else if (field == "reference") {
       const auto* arr = std::get_if<std::vector<double>>(&v);
       if (!arr || arr->empty() || arr->size() > 4) bad(w, "expected an array of 1 to 4 numbers (G28, G30 P2..P4)");
       for (size_t k = 0; k < arr->size(); ++k) a.reference[k] = (*arr)[k];
     } else {
-      bad(w, "unknown axis key (present, rapid, initial, rotary, diameter, reference)");
+      bad(w, "unknown axis key (present, rapid, initial, rotary, diameter, reference, min, max)");
     }
+    return;
+  }
+  if (head == "work_offsets") {
+    // work_offsets.G54 = [x, y, z] (axes in X Y Z A B C order of the axes the machine has)
+    // or work_offsets.G54.X = value.
+    static const std::string names = "XYZABC";
+    int idx = workOffsetIndex(rest);
+    std::string axis;
+    if (idx < 0) {
+      auto d = rest.rfind('.');
+      if (d != std::string::npos) idx = workOffsetIndex(rest.substr(0, d)), axis = rest.substr(d + 1);
+    }
+    if (idx < 0) bad(w, "work offsets are EXT, G54-G59 or \"G54.1 P1\"-\"G54.1 P300\"");
+    auto& row = s.workOffsets[idx];
+    if (axis.empty()) {
+      const auto* arr = std::get_if<std::vector<double>>(&v);
+      if (!arr) bad(w, "expected [x, y, z] or a table {X = .., Y = ..}");
+      size_t k = 0;
+      for (int slot = 0; slot < kMaxAxes && k < arr->size(); ++slot)
+        if (s.axes[static_cast<size_t>(slot)].present) row[static_cast<size_t>(slot)] = (*arr)[k++];
+      if (k < arr->size()) bad(w, "more values than the machine has axes");
+    } else {
+      if (axis.size() != 1 || names.find(axis[0]) == std::string::npos) bad(w, "axis letters are X Y Z A B C");
+      row[names.find(axis[0])] = asNumber(v, w);
+    }
+    return;
+  }
+  if (head == "tool_offsets") {
+    auto d = rest.find('.');
+    int n = 0;
+    std::string num = rest.substr(0, d), field = d == std::string::npos ? "" : rest.substr(d + 1);
+    auto r = std::from_chars(num.data(), num.data() + num.size(), n);
+    if (r.ec != std::errc() || n < 1 || n >= kToolRows) bad(w, "tool offset numbers are 1-999");
+    ToolOffsetSpec& t = s.toolOffsets[n];
+    static const std::map<std::string, std::pair<int, bool>> fields = {
+        {"h_geometry", {kFieldXorH, false}}, {"h_wear", {kFieldXorH, true}},
+        {"d_geometry", {kFieldRorD, false}}, {"d_wear", {kFieldRorD, true}},
+        {"x", {kFieldXorH, false}},          {"x_wear", {kFieldXorH, true}},
+        {"z", {kFieldZ, false}},             {"z_wear", {kFieldZ, true}},
+        {"r", {kFieldRorD, false}},          {"r_wear", {kFieldRorD, true}},
+        {"y", {kFieldY, false}},             {"y_wear", {kFieldY, true}}};
+    if (field == "t" || field == "tip") {
+      int64_t tip = asInteger(v, w);
+      if (tip < 0 || tip > 9) bad(w, "imaginary tip direction is 0-9");
+      t.tip = static_cast<int>(tip);
+    } else if (auto it = fields.find(field); it != fields.end()) {
+      (it->second.second ? t.wear : t.geometry)[static_cast<size_t>(it->second.first)] = asNumber(v, w);
+    } else {
+      bad(w, "tool offset fields: h_geometry h_wear d_geometry d_wear (mill); x z r t y and x_wear z_wear r_wear y_wear (lathe)");
+    }
+    return;
+  }
+  if (head == "tools") {
+    auto d = rest.find('.');
+    int n = 0;
+    std::string num = rest.substr(0, d), field = d == std::string::npos ? "" : rest.substr(d + 1);
+    auto r = std::from_chars(num.data(), num.data() + num.size(), n);
+    if (r.ec != std::errc() || n < 0 || n > 99999999) bad(w, "tools are keyed by T number");
+    ToolSpec& t = s.tools[n];
+    if (field == "type") {
+      t.type = asString(v, w);
+      static const char* kinds[] = {"flat", "ball", "bull", "face", "drill", "probe", "insert"};
+      bool ok = false;
+      for (auto* k : kinds) ok |= t.type == k;
+      if (!ok) bad(w, "tool types: flat ball bull face drill probe insert");
+    } else if (field == "diameter") t.diameter = asNumber(v, w);
+    else if (field == "corner_radius") t.cornerRadius = asNumber(v, w);
+    else if (field == "length") t.length = asNumber(v, w);
+    else if (field == "point_angle") t.pointAngle = asNumber(v, w);
+    else if (field == "flute_length") t.fluteLength = asNumber(v, w);
+    else if (field == "nose_radius") t.noseRadius = asNumber(v, w);
+    else if (field == "tip") t.tip = static_cast<int>(asInteger(v, w));
+    else if (field == "holder_diameter") t.holderDiameter = asNumber(v, w);
+    else if (field == "holder_length") t.holderLength = asNumber(v, w);
+    else bad(w, "tool fields: type diameter corner_radius length point_angle flute_length nose_radius tip holder_diameter holder_length");
+    return;
+  }
+  if (head == "probe") {
+    if (rest == "tool") s.probe.tool = static_cast<int>(asInteger(v, w));
+    else if (rest == "ball_diameter") s.probe.ballDiameter = asNumber(v, w);
+    else if (rest == "miss_alarm") s.probe.missAlarm = asBool(v, w);
+    else bad(w, "probe keys: tool ball_diameter miss_alarm");
+    return;
+  }
+  if (head == "solids") {
+    auto d = rest.find('.');
+    int n = 0;
+    std::string num = rest.substr(0, d), field = d == std::string::npos ? "" : rest.substr(d + 1);
+    auto r = std::from_chars(num.data(), num.data() + num.size(), n);
+    if (r.ec != std::errc() || n < 0 || n > 10000) bad(w, "solids is a list: [[solids]]");
+    if (static_cast<size_t>(n) >= s.solids.size()) s.solids.resize(static_cast<size_t>(n) + 1);
+    SolidSpec& so = s.solids[static_cast<size_t>(n)];
+    if (!so.line) so.line = line;
+    auto vec = [&](size_t minSize) {
+      const auto* arr = std::get_if<std::vector<double>>(&v);
+      if (!arr || arr->size() < minSize || arr->size() > 3) bad(w, "expected an array of 2 or 3 numbers");
+      return *arr;
+    };
+    if (field == "kind") {
+      so.kind = asString(v, w);
+      if (so.kind == "boss") so.kind = "cylinder";
+      if (so.kind != "box" && so.kind != "cylinder" && so.kind != "bore" && so.kind != "plane")
+        bad(w, "solid kinds: box cylinder boss bore plane");
+    } else if (field == "frame") {
+      so.frame = asString(v, w);
+      if (so.frame != "machine" && workOffsetIndex(so.frame) < 0) bad(w, "frame is machine or a work offset (G54, ...)");
+    } else if (field == "center") so.center = vec(2);
+    else if (field == "min") so.min = vec(3);
+    else if (field == "max") so.max = vec(3);
+    else if (field == "point") so.point = vec(3);
+    else if (field == "normal") so.normal = vec(3);
+    else if (field == "diameter") so.diameter = asNumber(v, w);
+    else if (field == "outer_diameter") so.outerDiameter = asNumber(v, w);
+    else if (field == "top") so.top = asNumber(v, w);
+    else if (field == "bottom") so.bottom = asNumber(v, w);
+    else bad(w, "solid fields: kind frame center diameter outer_diameter top bottom min max point normal");
     return;
   }
   bad(w, "unknown key");
@@ -204,6 +322,13 @@ void walk(Setup& s, const toml::table& t, const std::string& prefix) {
     int line = static_cast<int>(node.source().begin.line);
     if (auto* sub = node.as_table()) {
       walk(s, *sub, key);
+    } else if (auto* tables = node.as_array(); tables && !tables->empty() && tables->front().is_table()) {
+      // [[solids]]: an array of tables, walked as solids.0, solids.1, ...
+      for (size_t i = 0; i < tables->size(); ++i) {
+        auto* entry = (*tables)[i].as_table();
+        if (!entry) throw SetupError(key + ": mixed array", key, line);
+        walk(s, *entry, key + "." + std::to_string(i));
+      }
     } else if (auto* arr = node.as_array()) {
       std::vector<double> nums;
       for (const auto& e : *arr) {

@@ -13,6 +13,7 @@
 #include "canon/events.hpp"
 #include "core/units.hpp"
 #include "exec/gcode_table.hpp"
+#include "machine/offsets.hpp"
 
 namespace ncvm {
 
@@ -26,6 +27,41 @@ struct AxisConfig {
   double rapidRate = 24000.0;  // units/min (deg/min for rotary)
   std::array<double, 4> reference{};  // G28 / G30 P2..P4 positions, machine coordinates
   double initial = 0.0;        // machine position at cycle start
+  // Stored stroke limit 1 (machine coordinates); a move past it alarms before it starts.
+  double min = -1e12, max = 1e12;
+};
+
+// The physical tool in pocket T, independent of the offset values (seed 002's point: the
+// D offset may not be the cutter's real radius).
+struct ToolSpec {
+  std::string type = "flat";  // flat, ball, bull, face, drill, probe, insert
+  double diameter = 0, cornerRadius = 0, length = 0, pointAngle = 118, fluteLength = 0;
+  double noseRadius = 0;  // lathe insert
+  int tip = 0;            // lathe insert imaginary tip direction
+  double holderDiameter = 0, holderLength = 0;
+};
+
+// Geometry the probe can touch (G31). Cylinders, bosses and bores have their axis along Z.
+struct SolidSpec {
+  std::string kind;              // box, cylinder (= boss), bore, plane
+  std::string frame = "machine"; // machine, or a work offset name (EXT, G54.., G54.1 P1..)
+  std::vector<double> center, min, max, point, normal;  // X Y (Z) in the frame
+  double diameter = 0, outerDiameter = 0;
+  double top = 0, bottom = -1e9;
+  int line = 0;  // setup file line, for errors
+};
+
+struct ProbeSpec {
+  int tool = -1;            // T number of the probe; -1: every tool probes as a sphere
+  double ballDiameter = 0;  // stylus ball; 0 = the tool's diameter from [tools]
+  bool missAlarm = false;   // G31 that touches nothing: alarm PS9010 instead of ending normally
+};
+
+// Offsets as the operator enters them: mm (or inch), lathe X as a diameter.
+struct ToolOffsetSpec {
+  std::array<double, 4> geometry{};
+  std::array<double, 4> wear{};
+  int tip = 0;
 };
 
 struct Limits {
@@ -64,6 +100,12 @@ struct Setup {
   int64_t time = 80000;     // #3012 HHMMSS
   std::string dprntPath;    // DPRNT/BPRNT output; empty = <state or program>.out beside it
   std::map<int, double> initialVars;  // #100-#199, #500-#999 at cycle start
+  // Work offsets by table index (machine/offsets.hpp); unset axes stay 0.
+  std::map<int, std::array<double, kMaxAxes>> workOffsets;
+  std::map<int, ToolOffsetSpec> toolOffsets;
+  std::map<int, ToolSpec> tools;
+  ProbeSpec probe;
+  std::vector<SolidSpec> solids;
 
   Series series() const;
   double param(const std::string& key, double fallback) const;

@@ -176,4 +176,12 @@ void TraceWriter::onOffset(const OffsetEvent& e) {
   end();
 }
 
+void TraceWriter::onSkip(const SkipEvent& e) {
+  begin("skip", e.at);
+  fmt::format_to(std::back_inserter(buf_), ",\"hit\":{}", e.hit);
+  axes("position", e.position);
+  axes("mposition", e.mposition);
+  end();
+}
+
 }  // namespace ncvm

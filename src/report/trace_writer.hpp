@@ -28,6 +28,7 @@ class TraceWriter final : public EventSink {
   void onCoolant(const CoolantEvent& e) override;
   void onAux(const AuxEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
+  void onSkip(const SkipEvent& e) override;
 
  private:
   void begin(const char* type, const EventOrigin& at);

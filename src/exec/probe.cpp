@@ -1,0 +1,75 @@
+// G31 skip: a linear feed move that stops where the probe first touches the probe world
+// (fanuc-reference C, G31). The latched position goes to #5061- (work) and the skip event.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "exec/executor.hpp"
+#include "exec/words.hpp"
+
+namespace ncvm {
+
+void Executor::skipMove(const Words& w) {
+  if (modal_.g[7] != 400) throw AlarmError(AlarmId::CannotG31InCompensation);
+  std::array<int64_t, kMaxAxes> target{};
+  uint32_t mask = 0;
+  if (!axisTargets(w, target, mask)) return;
+  double feed = effectiveFeed();
+
+  // The probe is a sphere at the tool tip: the stylus ball of the probe tool, otherwise the
+  // tool's own diameter from [tools].
+  double r = 0;
+  const ProbeSpec& probe = setup_.probe;
+  auto tool = setup_.tools.find(modal_.tool);
+  if ((probe.tool < 0 || probe.tool == modal_.tool) && probe.ballDiameter > 0) r = probe.ballDiameter / 2;
+  else if (tool != setup_.tools.end()) r = tool->second.diameter / 2;
+
+  std::array<int64_t, kMaxAxes> fromM = machine_, toM;
+  for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = target[k] + offset_[k];
+  checkStroke(toM);
+  // Tip positions in machine coordinates, mm: the gauge point less the tool shift.
+  auto tipMm = [&](const std::array<int64_t, kMaxAxes>& m) {
+    Vec3 p{};
+    for (size_t k = 0; k < 3; ++k) p[k] = static_cast<double>(m[k] - toolShift_[k]) / 1e6;
+    return p;
+  };
+  std::optional<double> t;
+  if (probeWorld_) t = probeWorld_->firstContact(tipMm(fromM), tipMm(toM), r);
+  if (t) {
+    for (size_t k = 0; k < kMaxAxes; ++k)
+      toM[k] = fromM[k] + static_cast<int64_t>(std::llround(*t * static_cast<double>(toM[k] - fromM[k])));
+  }
+
+  MoveEvent e;
+  e.mode = MoveMode::Linear;
+  e.feed = feed;
+  double sq = 0;
+  for (int k = 0; k < kMaxAxes; ++k) {
+    double d = toProgramUnits(toM[static_cast<size_t>(k)] - fromM[static_cast<size_t>(k)], k, false);
+    sq += d * d;
+  }
+  e.length = std::sqrt(sq);
+  e.time = feed > 0 ? e.length / feed * 60.0 : 0.0;
+  emitMove(e, fromM, toM);
+  machine_ = toM;
+
+  // The control latches the position in its detection unit: round to the least increment.
+  for (int k = 0; k < kMaxAxes; ++k) {
+    auto s = static_cast<size_t>(k);
+    int64_t per = modal_.unit == InputUnit::Inch ? nmPerIncInch_[s] : nmPerIncMm_[s];
+    int64_t work = machine_[s] - offset_[s];
+    skip_[s] = static_cast<int64_t>(std::llround(static_cast<double>(work) / static_cast<double>(per))) * per;
+    programmed_[s] = work;
+  }
+  SkipEvent ev;
+  ev.at = origin_;
+  ev.hit = t.has_value();
+  for (int k = 0; k < kMaxAxes; ++k) {
+    ev.position[static_cast<size_t>(k)] = toProgramUnits(skip_[static_cast<size_t>(k)], k, true);
+    ev.mposition[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
+  }
+  sink_.onSkip(ev);
+  if (!t && probe.missAlarm) throw AlarmError(AlarmId::SkipNotReceived);
+}
+
+}  // namespace ncvm
