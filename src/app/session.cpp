@@ -30,7 +30,7 @@ std::string bundledMacrosFolder() {
 static ParseOptions parseOptionsFor(const Setup& s) {
   ParseOptions o;
   o.maxLineLength = s.limits.maxLineLength;
-  o.eightDigitO = s.control == "30i" || s.control == "31i" || s.control == "0i-F";
+  o.eightDigitO = s.programNumberDigits == 8;
   return o;
 }
 

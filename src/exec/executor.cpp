@@ -253,6 +253,7 @@ bool Executor::step() {
     ++f.pc;
     return true;
   }
+  if (b.n >= 0) lastN_ = b.n;
   origin_.file = b.loc.file;
   origin_.line = b.loc.line;
   origin_.n = b.n;

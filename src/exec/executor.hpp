@@ -101,6 +101,9 @@ class Executor {
   bool lathe_;
   bool dpi_;
   std::array<const GCodeInfo*, 1000> gInfo_{};  // by G code x10
+  const GCodeInfo* gInfo(int code10) const {
+    return code10 >= 0 && code10 < 1000 ? gInfo_[static_cast<size_t>(code10)] : nullptr;
+  }
   std::array<int64_t, kMaxAxes> nmPerIncMm_{}, nmPerIncInch_{};
 
   // ---- call stack ----
@@ -153,6 +156,8 @@ class Executor {
   std::array<int64_t, kMaxAxes> g28Mid_{};
   bool g28MidSet_ = false;
   bool spindleOn_ = false;
+  SpindleDir spindleDir_ = SpindleDir::Cw;
+  int32_t lastN_ = 0;  // #4114: the last sequence number read
   double rpm_ = 0;
   double spindleClamp_ = 0;  // G50/G92 S (lathe), 0 = none
   bool warnedRevFeed_ = false;
@@ -199,7 +204,7 @@ class Executor {
   void gatherWords(const Block& b, Words& w);
   bool codeCall(const Block& b, Words& w);
   void macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
-                          bool codeCalled);
+                          bool codeCalled, int callingM = -1);
   void applyModalG(int code10, const GCodeInfo& info);
   void deriveModal();
   void auxFunctions(Words& w);

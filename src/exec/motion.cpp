@@ -127,7 +127,7 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
     double rpm = cssRpmAt(toMachine[0]);
     if (rpm != rpm_) {
       rpm_ = rpm;
-      sink_.onSpindle(SpindleEvent{origin_, modal_.lastM == 4 ? SpindleDir::Ccw : SpindleDir::Cw, rpm_});
+      sink_.onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
     }
   }
 }
@@ -145,8 +145,10 @@ void Executor::rapidMachine(const std::array<int64_t, kMaxAxes>& toM, uint32_t m
     auto s = static_cast<size_t>(k);
     d[s] = toProgramUnits(toM[s] - fromM[s], k, false);
     sq += d[s] * d[s];
+    // Rapid rates are machine values in mm/min (deg/min): time from the distance in mm.
+    double mm = static_cast<double>(toM[s] - fromM[s]) / 1e6;
     double rate = setup_.axes[s].rapidRate;
-    t[s] = rate > 0 ? std::fabs(d[s]) / rate * 60.0 : 0.0;
+    t[s] = rate > 0 ? std::fabs(mm) / rate * 60.0 : 0.0;
     time = std::max(time, t[s]);
   }
   e.time = time;
@@ -342,10 +344,9 @@ void Executor::referenceReturn(const Words& w, int which) {
   for (size_t k = 0; k < kMaxAxes; ++k) {
     if (!(mask & (1u << k))) continue;
     const AxisConfig& a = setup_.axes[k];
-    InputUnit u = modal_.unit;
+    // Reference positions are fixed machine points, in mm whatever G20/G21 says.
     double ref = a.reference[static_cast<size_t>(which - 1)];
-    int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, u)) *
-                 (u == InputUnit::Inch ? nmPerIncInch_[k] : nmPerIncMm_[k]);
+    int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
     toM[k] = a.diameter ? nm / 2 : nm;
   }
   rapidMachine(toM, mask);
@@ -357,6 +358,11 @@ void Executor::returnFromReference(const Words& w) {
   uint32_t mask = 0;
   axisTargets(w, target, mask);
   if (!mask) return;
+  if (modal_.incremental && g28MidSet_) {
+    // In G91 the end point is an increment from the intermediate point.
+    for (size_t k = 0; k < kMaxAxes; ++k)
+      if (mask & (1u << k)) target[k] = g28Mid_[k] + (target[k] - (machine_[k] - offset_[k]));
+  }
   std::array<int64_t, kMaxAxes> toM = machine_;
   if (g28MidSet_) {
     for (size_t k = 0; k < kMaxAxes; ++k)

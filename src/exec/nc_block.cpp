@@ -69,7 +69,10 @@ void Executor::gatherWords(const Block& b, Words& w) {
     }
     if (L == 'G') {
       int code10 = static_cast<int>(std::llround(v * 10.0));
-      if (w.ng >= static_cast<int>(w.g.size()) || code10 < 0 || code10 >= 1000 || !gInfo_[static_cast<size_t>(code10)]) {
+      // A G code number the control lacks is still legal when a parameter (6050-6059)
+      // makes it call a macro; codeCall() or the modal loop decide.
+      bool called = code10 % 10 == 0 && setup_.gCodeCall(code10 / 10) >= 0;
+      if (w.ng >= static_cast<int>(w.g.size()) || code10 < 0 || code10 >= 10000 || (!gInfo(code10) && !called)) {
         AlarmError e(AlarmId::ImproperGCode, fmt::format("G{}", v));
         e.col = wd.col;
         throw e;
@@ -99,7 +102,7 @@ void Executor::gatherWords(const Block& b, Words& w) {
 }
 
 void Executor::macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
-                                  bool codeCalled) {
+                                  bool codeCalled, int callingM) {
   std::array<Value, 33> args{};
   std::array<double, 33> scale{};
   // Argument specification I and II in one pass: I/J/K open a new set when the same or an
@@ -107,6 +110,10 @@ void Executor::macroCallFromWords(const Program* p, int repeats, const Words& w,
   int set = 0, lastIjk = 3;
   for (int k = 0; k < w.nArgs; ++k) {
     const Words::Arg& a = w.args[static_cast<size_t>(k)];
+    if (a.letter == 'M' && callingM >= 0 && std::llround(a.value) == callingM) {
+      callingM = -1;  // the M code that makes the call is not an argument
+      continue;
+    }
     int var = kArgVar[a.letter - 'A'];
     if (a.letter == 'I' || a.letter == 'J' || a.letter == 'K') {
       int idx = a.letter - 'I';
@@ -148,7 +155,7 @@ bool Executor::codeCall(const Block& b, Words& w) {
     int m = w.m[static_cast<size_t>(k)];
     if (int prog = setup_.mCodeMacroCall(m); prog >= 0) {
       ++frames_.back().pc;
-      macroCallFromWords(findProgram(prog, -1), 1, w, FrameKind::Macro, true);
+      macroCallFromWords(findProgram(prog, -1), 1, w, FrameKind::Macro, true, m);
       return true;
     }
   }
@@ -240,7 +247,14 @@ void Executor::execNc(const Block& b) {
   int oneShot = -1;
   for (int k = 0; k < w.ng; ++k) {
     int code = w.g[static_cast<size_t>(k)];
-    const GCodeInfo& info = *gInfo_[static_cast<size_t>(code)];
+    if (!gInfo(code)) {
+      // Only reachable for a macro-call G code inside a code-called program: executed as
+      // an ordinary G code, which the control does not have.
+      AlarmError e(AlarmId::ImproperGCode, fmt::format("G{}", code / 10));
+      e.col = w.gcol[static_cast<size_t>(k)];
+      throw e;
+    }
+    const GCodeInfo& info = *gInfo(code);
     if (info.status == GStatus::NotYet) {
       AlarmError e(AlarmId::ImproperGCode,
                    fmt::format("G{:02d}{} ({}) is not supported by ncvm yet", code / 10,
@@ -299,19 +313,17 @@ void Executor::execNc(const Block& b) {
     double before = rpm_;
     rpm_ = modal_.css ? cssRpmAt(machine_[0]) : modal_.speed;
     if (spindleOn_ && rpm_ != before) {
-      sink_.onSpindle(SpindleEvent{origin_, modal_.lastM == 4 ? SpindleDir::Ccw : SpindleDir::Cw, rpm_});
+      sink_.onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
     }
   }
   if (w.has('T')) {
     modal_.tool = integerWord(w, 'T');
     if (setup_.tcs() && !f.codeCalled) {
-      writeVar(149, Value::num(modal_.tool));
-      ++f.pc;
-      callSub(findProgram(9000, -1), 1, true);
-      return;
+      // T code call (6001#5): the rest of the block runs first, then O9000 with #149 = T.
+      w.tCall = true;
     }
-    sink_.onTool(ToolEvent{origin_, lathe_ ? modal_.tool / 100 : modal_.tool, false});
-    if (lathe_) applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
+    if (!w.tCall) sink_.onTool(ToolEvent{origin_, lathe_ ? modal_.tool / 100 : modal_.tool, false});
+    if (lathe_ && !w.tCall) applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
   }
   auxFunctions(w);
   if (ended_) return;
@@ -380,6 +392,7 @@ void Executor::auxFunctions(Words& w) {
       case 3:
       case 4:
         spindleOn_ = true;
+        spindleDir_ = m == 3 ? SpindleDir::Cw : SpindleDir::Ccw;
         modal_.lastM = m;
         rpm_ = modal_.css ? cssRpmAt(machine_[0]) : modal_.speed;
         sink_.onSpindle(SpindleEvent{origin_, m == 3 ? SpindleDir::Cw : SpindleDir::Ccw, rpm_});
@@ -453,8 +466,9 @@ void Executor::programControl(Words& w, bool moved) {
       int32_t p = w.has('P') ? integerWord(w, 'P') : -1;
       int repeats = w.has('L') ? integerWord(w, 'L') : 1;
       if (p < 0 && w.nameIdx < 0) throw AlarmError(AlarmId::ProgramNotFound, "M98 without P");
-      if (!w.has('L') && p > 9999 && !setup_.bit("6000#8")) {
-        // M98 Pxxxxnnnn: repeat count in front of a four-digit program number.
+      if (!w.has('L') && p > 9999 && setup_.programNumberDigits == 4) {
+        // M98 Pxxxxnnnn: repeat count in front of a four-digit program number (with 8-digit
+        // program numbers the repeat count can only be given with L).
         repeats = p / 10000;
         p %= 10000;
       }
@@ -469,7 +483,12 @@ void Executor::programControl(Words& w, bool moved) {
       return;
     }
   }
-  if (w.subCallProgram >= 0) callSub(findProgram(w.subCallProgram, -1), 1, true);
+  if (w.subCallProgram >= 0) {
+    callSub(findProgram(w.subCallProgram, -1), 1, true);
+  } else if (w.tCall) {
+    writeVar(149, Value::num(modal_.tool));
+    callSub(findProgram(9000, -1), 1, true);
+  }
 }
 
 }  // namespace ncvm

@@ -76,7 +76,7 @@ Value Executor::readSystem(int64_t n) {
       case 4109: return Value::num(modal_.feed);
       case 4111: return Value::num(modal_.hOffset);
       case 4113: return Value::num(modal_.lastM);
-      case 4114: return Value::num(block_ && block_->n >= 0 ? block_->n : 0);
+      case 4114: return Value::num(lastN_);
       case 4115: return Value::num(frames_.back().prog->number >= 0 ? frames_.back().prog->number : 0);
       case 4119: return Value::num(modal_.speed);
       case 4120: return Value::num(modal_.tool);

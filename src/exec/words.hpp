@@ -20,6 +20,7 @@ struct Words {
   std::array<int32_t, 3> m;
   int32_t nameIdx = -1;        // <name> word: index into Program::strings
   int32_t subCallProgram = -1; // M code subprogram call (parameters 6071-6079)
+  bool tCall = false;          // T code calls O9000 (parameter 6001#5) after the block
   struct Arg {
     char letter;
     double value;

@@ -97,6 +97,10 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
       const auto& g = asString(v, w);
       if (g != "A" && g != "B" && g != "C") bad(w, "expected \"A\", \"B\" or \"C\"");
       s.gcodeSystem = g[0];
+    } else if (rest == "program_number_digits") {
+      int64_t d = asInteger(v, w);
+      if (d != 4 && d != 8) bad(w, "expected 4 or 8");
+      s.programNumberDigits = static_cast<int>(d);
     } else if (rest == "increment") {
       const auto& g = asString(v, w);
       if (g == "IS-A") s.increment = IncrementSystem::IsA;
@@ -435,7 +439,25 @@ void applySetting(Setup& setup, const std::string& assignment) {
   SettingValue v;
   double d = 0;
   auto r = std::from_chars(text.data(), text.data() + text.size(), d);
-  if (text == "true" || text == "false") v = text == "true";
+  if (text.size() >= 2 && text.front() == '[' && text.back() == ']') {
+    std::vector<double> nums;
+    std::string inner = text.substr(1, text.size() - 2);
+    size_t pos = 0;
+    while (pos <= inner.size() && !inner.empty()) {
+      size_t comma = inner.find(',', pos);
+      std::string item = inner.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+      double x = 0;
+      size_t b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
+      item = b == std::string::npos ? "" : item.substr(b, e - b + 1);
+      auto ir = std::from_chars(item.data(), item.data() + item.size(), x);
+      if (ir.ec != std::errc() || ir.ptr != item.data() + item.size())
+        throw SetupError("--set " + key + ": bad number in array: " + item, key, 0);
+      nums.push_back(x);
+      if (comma == std::string::npos) break;
+      pos = comma + 1;
+    }
+    v = nums;
+  } else if (text == "true" || text == "false") v = text == "true";
   else if (r.ec == std::errc() && r.ptr == text.data() + text.size()) v = d;
   else v = text;
   applyKey(setup, key, v, 0);

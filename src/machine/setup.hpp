@@ -86,6 +86,7 @@ struct Setup {
   MachineKind kind = MachineKind::Mill;
   std::string control = "0i-F";  // 0i-F, 30i, 16i: sets nesting limits and defaults
   char gcodeSystem = 'A';        // lathes: A, B or C
+  int programNumberDigits = 4;   // 8 with the 8-digit program number option
   IncrementSystem increment = IncrementSystem::IsB;
   InputUnit initialUnit = InputUnit::Mm;  // G21 at power-on (machine in mm)
   std::array<AxisConfig, kMaxAxes> axes{};
