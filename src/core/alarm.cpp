@@ -30,6 +30,7 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::IllegalOffsetValueInG10, "ILLEGAL OFFSET VALUE IN G10", "G10 with a value out of range."},
       {AlarmId::CannotG31InCompensation, "CAN NOT COMMANDED G31", "G31 while cutter compensation is on."},
       {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC", "G27-G30 in canned-cycle mode."},
+      {AlarmId::QNotFound, "ADDRESS Q NOT FOUND (G73/G83)", "G73 or G83 without a peck depth Q (or Q0)."},
       {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND", "G30 with P other than 2-4."},
       {AlarmId::ProgramNumberOutOfRange, "ILLEGAL PROGRAM NUMBER",
        "A program number outside 1-9999 (1-99999999 with 8-digit O numbers), or O0."},

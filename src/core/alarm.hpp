@@ -31,6 +31,7 @@ enum class AlarmId : uint16_t {
   IllegalOffsetValueInG10 = 32,
   CannotG31InCompensation = 35,
   G27to30InCycle = 44,
+  QNotFound = 45,
   IllegalReferenceReturn = 46,
   ProgramNumberOutOfRange = 74,
   ProgramNotFound = 76,

@@ -244,6 +244,19 @@ class Executor {
   // probe.cpp
   void skipMove(const Words& w);
 
+  // drill_cycles.cpp
+  struct DrillCycle {
+    bool active = false;
+    int axis = 2;
+    int64_t initial = 0, r = 0, bottom = 0, q = 0;
+    bool haveR = false, haveZ = false;
+    double dwellMs = 0;
+  };
+  DrillCycle cycle_;
+  void cancelCycle();
+  bool drillCycle(const Words& w, bool cycleCommanded);
+  void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis);
+
   // print.cpp
   void print(const Block& b);
 };

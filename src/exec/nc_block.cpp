@@ -244,7 +244,10 @@ void Executor::execNc(const Block& b) {
   }
 
   // G codes: modal ones change state (the last of a group wins), one-shot ones are noted.
+  const int16_t workBefore = modal_.g[14], lengthBefore = modal_.g[8];
+  const int32_t hBefore = modal_.hOffset;
   int oneShot = -1;
+  bool cycleCommanded = false;
   for (int k = 0; k < w.ng; ++k) {
     int code = w.g[static_cast<size_t>(k)];
     if (!gInfo(code)) {
@@ -265,9 +268,13 @@ void Executor::execNc(const Block& b) {
     if (code == 670) continue;
     if (info.group == 0) oneShot = code;
     else applyModalG(code, info);
+    if (!lathe_ && info.group == 9) {
+      if (code == 800) cancelCycle();
+      else cycleCommanded = true;
+    }
+    // A group-01 code ends canned-cycle mode (mill).
+    if (!lathe_ && info.group == 1 && modal_.g[9] != 800) cancelCycle();
   }
-  int16_t workBefore = modal_.g[14], lengthBefore = modal_.g[8];
-  int32_t hBefore = modal_.hOffset;
   deriveModal();
   if (modal_.g[14] != workBefore || (w.has('P') && modal_.g[14] >= 540 && oneShot < 0 && [&] {
         for (int k = 0; k < w.ng; ++k)
@@ -363,6 +370,10 @@ void Executor::execNc(const Block& b) {
       moved = true;
       break;
     default: {
+      if (!lathe_ && modal_.g[9] != 800) {
+        moved = drillCycle(w, cycleCommanded);
+        break;
+      }
       bool arc = modal_.motion == 20 || modal_.motion == 30;
       bool hasAxes = axisTargets(w, target, mask);
       if (arc && (hasAxes || w.any("IJKR"))) {
