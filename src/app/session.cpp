@@ -141,7 +141,9 @@ nlohmann::json Session::check() const {
         if (w[k].letter != 'G' || w[k].kind != WordKind::Literal) continue;
         int g = static_cast<int>(w[k].value * 10 + 0.5);
         macroCall |= g == 650 || g == 660;
-        latheCycle |= setup_.kind == MachineKind::Lathe && (g == 740 || g == 750 || g == 760);
+        // Lathe multiple repetitive cycles take P/Q sequence numbers, R pass counts and
+        // P/Q/R in least increments by design (G74-G76): no decimal-point warning there.
+        latheCycle |= setup_.kind == MachineKind::Lathe && g >= 700 && g <= 780;
       }
       uint32_t seen = 0;
       for (uint32_t k = 0; k < b.nWords; ++k) {
@@ -155,11 +157,11 @@ nlohmann::json Session::check() const {
         }
         seen |= bit;
         bool lengthAddress = std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
-        if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P')) lengthAddress = false;
+        if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P' || wd.letter == 'R')) lengthAddress = false;
         if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) && wd.value != 0) {
           Alarm a{"W001",
-                  fmt::format("{}{} has no decimal point: it means {} least increments ({} mm), not {} mm",
-                              wd.letter, wd.value, wd.value, wd.value * 0.001, wd.value),
+                  fmt::format("{}{} has no decimal point: it means {} least increments ({} mm or {} in), not {}",
+                              wd.letter, wd.value, wd.value, wd.value * 0.001, wd.value * 0.0001, wd.value),
                   SourceLoc{b.loc.file, b.loc.line, wd.col}, std::nullopt, p->number};
           found.push_back({false, a});
         }

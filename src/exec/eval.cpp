@@ -64,7 +64,7 @@ double binaryToBcd(double x) {
 }  // namespace
 
 double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
-  bool nat = setup_.nat();
+  bool nat = nat_;
   switch (fn) {
     case Fn::Sin: return sinDeg(a);
     case Fn::Cos: return cosDeg(a);
@@ -129,7 +129,7 @@ Value Executor::eval(int32_t expr) {
     if (in.op == Op::Const) return Value::num(p.consts[static_cast<size_t>(in.arg)]);
     if (in.op == Op::Var) return readVar(in.arg);
   }
-  Value st[kStack];
+  Value* st = evalStack_.data();  // eval never re-enters itself: one stack serves
   int sp = 0;
   for (uint32_t k = r.begin; k < r.end; ++k) {
     const Instr& in = code[k];

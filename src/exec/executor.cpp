@@ -28,6 +28,16 @@ Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
     nmPerIncMm_[static_cast<size_t>(k)] = nmPerIncrement(setup.increment, InputUnit::Mm, rot);
     nmPerIncInch_[static_cast<size_t>(k)] = nmPerIncrement(setup.increment, InputUnit::Inch, rot);
   }
+  for (int c = 0; c < 1000; ++c) {
+    int g = setup.gCodeCall(c), mm = setup.mCodeMacroCall(c), ms = setup.mCodeSubCall(c);
+    gCall_[static_cast<size_t>(c)] = static_cast<int16_t>(g < 0 ? 0 : g);
+    mMacroCall_[static_cast<size_t>(c)] = static_cast<int16_t>(mm < 0 ? 0 : mm);
+    mSubCall_[static_cast<size_t>(c)] = static_cast<int16_t>(ms < 0 ? 0 : ms);
+  }
+  nat_ = setup.nat();
+  lrp_ = setup.lrp();
+  tcs_ = setup.tcs();
+  arcTolerance_ = setup.arcTolerance();
   frames_.reserve(32);
   modalCalls_.reserve(8);
   // Power-on modal state.

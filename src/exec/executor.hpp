@@ -105,6 +105,11 @@ class Executor {
     return code10 >= 0 && code10 < 1000 ? gInfo_[static_cast<size_t>(code10)] : nullptr;
   }
   std::array<int64_t, kMaxAxes> nmPerIncMm_{}, nmPerIncInch_{};
+  // Parameter-driven calls, looked up once: program number by G code (x1) / M code.
+  std::array<int16_t, 1000> gCall_{};
+  std::array<int16_t, 1000> mMacroCall_{}, mSubCall_{};
+  bool nat_ = false, lrp_ = false, tcs_ = false;
+  double arcTolerance_ = 0.01;
 
   // ---- call stack ----
   enum class FrameKind : uint8_t { Main, Sub, Macro, ModalMacro };
@@ -130,6 +135,7 @@ class Executor {
   std::array<std::array<double, 33>, kMaxLevels> callArgScale_{};
   std::array<Value, 100> common100_{};
   double timerMsOffset_ = 0, timerHourOffset_ = 0;
+  std::array<Value, 64> evalStack_{};
   double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0;
 
   // ---- modal calls (G66) ----

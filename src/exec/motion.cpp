@@ -153,7 +153,7 @@ void Executor::rapidMachine(const std::array<int64_t, kMaxAxes>& toM, uint32_t m
   }
   e.time = time;
   e.feed = time > 0 ? std::sqrt(sq) / time * 60.0 : 0.0;
-  if (!setup_.lrp()) {
+  if (!lrp_) {
     // Dog-leg: every axis at its own rapid rate, so the path bends where an axis arrives.
     std::array<double, kMaxAxes> stops = t;
     std::sort(stops.begin(), stops.end());
@@ -229,7 +229,7 @@ void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Word
   for (size_t k = 0; k < kMaxAxes; ++k) startW[k] = machine_[k] - offset_[k];
   double su = static_cast<double>(startW[U]), sv = static_cast<double>(startW[V]);
   double eu = static_cast<double>(targetWork[U]), ev = static_cast<double>(targetWork[V]);
-  double tolNm = setup_.arcTolerance() * 1e6;
+  double tolNm = arcTolerance_ * 1e6;
   double cu0 = su, cv0 = sv;
   if (w.has('R')) {
     double r = static_cast<double>(lengthNm(w.value('R'), w.hasPoint('R'), u));

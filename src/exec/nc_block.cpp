@@ -71,7 +71,7 @@ void Executor::gatherWords(const Block& b, Words& w) {
       int code10 = static_cast<int>(std::llround(v * 10.0));
       // A G code number the control lacks is still legal when a parameter (6050-6059)
       // makes it call a macro; codeCall() or the modal loop decide.
-      bool called = code10 % 10 == 0 && setup_.gCodeCall(code10 / 10) >= 0;
+      bool called = code10 % 10 == 0 && code10 < 10000 && gCall_[static_cast<size_t>(code10 / 10)] > 0;
       if (w.ng >= static_cast<int>(w.g.size()) || code10 < 0 || code10 >= 10000 || (!gInfo(code10) && !called)) {
         AlarmError e(AlarmId::ImproperGCode, fmt::format("G{}", v));
         e.col = wd.col;
@@ -145,15 +145,15 @@ bool Executor::codeCall(const Block& b, Words& w) {
   for (int k = 0; k < w.ng; ++k) {
     int g = w.g[static_cast<size_t>(k)];
     if (g % 10 != 0) continue;
-    int prog = setup_.gCodeCall(g / 10);
-    if (prog < 0) continue;
+    int prog = g < 10000 ? gCall_[static_cast<size_t>(g / 10)] : 0;
+    if (prog <= 0) continue;
     ++frames_.back().pc;
     macroCallFromWords(findProgram(prog, -1), w.has('L') ? integerWord(w, 'L') : 1, w, FrameKind::Macro, true);
     return true;
   }
   for (int k = 0; k < w.nm; ++k) {
     int m = w.m[static_cast<size_t>(k)];
-    if (int prog = setup_.mCodeMacroCall(m); prog >= 0) {
+    if (int prog = m >= 0 && m < 1000 ? mMacroCall_[static_cast<size_t>(m)] : 0; prog > 0) {
       ++frames_.back().pc;
       macroCallFromWords(findProgram(prog, -1), 1, w, FrameKind::Macro, true, m);
       return true;
@@ -325,7 +325,7 @@ void Executor::execNc(const Block& b) {
   }
   if (w.has('T')) {
     modal_.tool = integerWord(w, 'T');
-    if (setup_.tcs() && !f.codeCalled) {
+    if (tcs_ && !f.codeCalled) {
       // T code call (6001#5): the rest of the block runs first, then O9000 with #149 = T.
       w.tCall = true;
     }
@@ -429,7 +429,7 @@ void Executor::auxFunctions(Words& w) {
         sink_.onCoolant(CoolantEvent{origin_, m == 9 ? CoolantState::Off : m == 7 ? CoolantState::Mist : CoolantState::Flood});
         break;
       default:
-        if (int prog = setup_.mCodeSubCall(m); prog >= 0 && !frames_.back().codeCalled) {
+        if (int prog = m >= 0 && m < 1000 ? mSubCall_[static_cast<size_t>(m)] : 0; prog > 0 && !frames_.back().codeCalled) {
           // Subprogram-type M code call: the block's other words run first, then the call,
           // which happens with programControl's ordering below (treated as M98).
           w.subCallProgram = prog;

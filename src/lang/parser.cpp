@@ -1,5 +1,6 @@
 #include "lang/parser.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <string>
@@ -79,6 +80,13 @@ class Compiler {
     if (prog_) resolveStructure(*prog_);
     out_.programs.emplace_back();
     prog_ = &out_.programs.back();
+    if (out_.programs.size() == 1) {
+      // Most files hold one program: size its arrays from the text once, so a large CAM
+      // file is never copied while its arrays grow.
+      size_t lines = static_cast<size_t>(std::count(s_.begin(), s_.end(), '\n')) + 1;
+      prog_->blocks.reserve(lines);
+      prog_->words.reserve(lines * 3);
+    }
     prog_->number = number;
     prog_->name = std::move(name);
     prog_->loc = loc;
