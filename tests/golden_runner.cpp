@@ -173,7 +173,7 @@ TEST_P(Golden, Run) {
   if (mode == "check") {
     check = session.check();
   } else {
-    ncvm::TraceWriter writer(session.files(), nullptr, 1ull << 30);
+    ncvm::TraceWriter writer(session.files(), nullptr, 1ull << 30, session.setup().reportedAxes());
     auto r = session.run(&writer);
     state = r.state;
     printed = r.printed;

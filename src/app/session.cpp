@@ -66,7 +66,11 @@ nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files) {
 }
 
 namespace {
-nlohmann::json axes3(const AxisArray& a) { return nlohmann::json::array({a[0], a[1], a[2]}); }
+nlohmann::json axesJson(const AxisArray& a, int n) {
+  nlohmann::json j = nlohmann::json::array();
+  for (int k = 0; k < n; ++k) j.push_back(a[static_cast<size_t>(k)]);
+  return j;
+}
 }  // namespace
 
 Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState) {
@@ -91,7 +95,8 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   s["end"] = endReasonName(r.end);
   s["alarm"] = r.alarm ? alarmJson(*r.alarm, files_) : nlohmann::json(nullptr);
   s["program"] = main_->label;
-  s["position"] = {{"work", axes3(exec.workPosition())}, {"machine", axes3(exec.machinePosition())}};
+  int axes = setup_.reportedAxes();
+  s["position"] = {{"work", axesJson(exec.workPosition(), axes)}, {"machine", axesJson(exec.machinePosition(), axes)}};
   nlohmann::json modal = nlohmann::json::object();
   const ModalState& m = exec.modal();
   for (int g = 1; g < kGroups; ++g) {

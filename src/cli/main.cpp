@@ -72,7 +72,8 @@ int runCommand(const CommonOptions& o, const std::string& tracePath, const std::
   std::unique_ptr<TraceWriter> trace;
   if (!tracePath.empty()) {
     traceFile = std::make_unique<AtomicFile>(tracePath);
-    trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(), session.setup().limits.maxTraceBytes);
+    trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(), session.setup().limits.maxTraceBytes,
+                                          session.setup().reportedAxes());
   }
   nlohmann::json memory;
   bool haveMemory = false;

@@ -28,10 +28,37 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::IllegalOffsetNumber, "ILLEGAL OFFSET NUMBER", "An H, D or T offset number out of range."},
       {AlarmId::IllegalPInG10, "ILLEGAL P COMMAND IN G10", "G10 with an L or P it does not accept."},
       {AlarmId::IllegalOffsetValueInG10, "ILLEGAL OFFSET VALUE IN G10", "G10 with a value out of range."},
+      {AlarmId::NoIntersectionCrc, "NO INTERSECTION AT CUTTER COMPENSATION",
+       "Cutter compensation C cannot place a corner: the offset paths do not meet, or the cutter "
+       "radius is larger than an inner arc."},
+      {AlarmId::NoCircInStartupCancel, "NO CIRC ALLOWED IN STUP/EXT BLK",
+       "G02/G03 in the block that starts (G41/G42) or cancels (G40, D0) cutter compensation."},
       {AlarmId::CannotG31InCompensation, "CAN NOT COMMANDED G31", "G31 while cutter compensation is on."},
+      {AlarmId::InterferenceInCircular, "INTERFERENCE IN CIRCULAR BLOCK",
+       "Cutter compensation moves an arc's start or end point onto its centre."},
+      {AlarmId::InterferenceInCrc, "INTERFERENCE IN CUTTER COMPENSATION",
+       "A compensated block would run against its programmed direction (a step or groove "
+       "smaller than the cutter radius): the tool would overcut."},
       {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC", "G27-G30 in canned-cycle mode."},
       {AlarmId::QNotFound, "ADDRESS Q NOT FOUND (G73/G83)", "G73 or G83 without a peck depth Q (or Q0)."},
       {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND", "G30 with P other than 2-4."},
+      {AlarmId::CycleAddressPQNotFound, "ADDRESS P/Q NOT FOUND IN G70-G73",
+       "G70-G73 without the P or Q that names the shape program."},
+      {AlarmId::CycleIllegalCommand, "ILLEGAL COMMAND IN G71-G76",
+       "A bad value in G71-G76: depth of cut 0 or less, G73 divisions below 1, a G74/G75 "
+       "shift of 0, a G76 height, depth, angle or count out of range."},
+      {AlarmId::CycleSequenceNotFound, "SEQUENCE NUMBER NOT FOUND",
+       "The ns or nf block of G70-G73 is not in the program."},
+      {AlarmId::ShapeNotMonotonous, "SHAPE PROGRAM NOT MONOTONOUSLY",
+       "The G71/G72 shape is not monotonic: type I in both axes, type II along the cut."},
+      {AlarmId::ShapeFirstBlockNotG00G01, "G00/G01 IS NOT IN THE FIRST SHAPE PROGRAM",
+       "The ns block of G70-G73 is not G00 or G01."},
+      {AlarmId::CycleUnavailableCommand, "UNAVAILABLE COMMAND IS IN G71-G76",
+       "A command the shape program may not contain (M98, G codes of other groups, ...)."},
+      {AlarmId::CycleNotInMemory, "G70-G73 NOT IN MEMORY",
+       "G70-G73 run from MDI or DNC, where the shape blocks cannot be read back."},
+      {AlarmId::ShapeLastBlockIllegal, "LAST BLOCK OF SHAPE PROGRAM IS AN ILLEGAL COMMAND",
+       "The nf block ends in a chamfer or corner R that has nothing to join."},
       {AlarmId::ProgramNumberOutOfRange, "ILLEGAL PROGRAM NUMBER",
        "A program number outside 1-9999 (1-99999999 with 8-digit O numbers), or O0."},
       {AlarmId::ProgramNotFound, "PROGRAM NOT FOUND",
@@ -69,6 +96,10 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::IllegalMacroSequence, "ILLEGAL MACRO SEQUENCE NUMBER",
        "GOTO to a sequence number that is not in the program or out of 1-99999."},
       {AlarmId::GAsArgument, "USE 'G' AS ARGUMENT", "G used as an argument of G65/G66."},
+      {AlarmId::OvertravelPlus, "+ OVERTRAVEL ( SOFT 1 )",
+       "A move would pass an axis' upper stroke limit (axes.<X>.max); it is refused before it starts."},
+      {AlarmId::OvertravelMinus, "- OVERTRAVEL ( SOFT 1 )",
+       "A move would pass an axis' lower stroke limit (axes.<X>.min); it is refused before it starts."},
       {AlarmId::BlockLimit, "BLOCK LIMIT REACHED",
        "ncvm: the run executed more blocks than limits.max_blocks (runaway program)."},
       {AlarmId::TimeLimit, "TIME LIMIT REACHED",
@@ -91,7 +122,10 @@ const char* alarmMessage(AlarmId id) {
   return "ALARM";
 }
 
-std::string alarmCode(AlarmId id) { return fmt::format("PS{:04d}", static_cast<int>(id)); }
+std::string alarmCode(AlarmId id) {
+  int n = static_cast<int>(id);
+  return fmt::format("{}{:04d}", n >= 500 && n < 600 ? "OT" : "PS", n);
+}
 
 static std::string joinText(AlarmId id, const std::string& detail) {
   std::string t = alarmMessage(id);

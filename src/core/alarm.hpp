@@ -29,10 +29,23 @@ enum class AlarmId : uint16_t {
   IllegalOffsetNumber = 30,
   IllegalPInG10 = 31,
   IllegalOffsetValueInG10 = 32,
+  NoIntersectionCrc = 33,
+  NoCircInStartupCancel = 34,
   CannotG31InCompensation = 35,
+  InterferenceInCircular = 38,
+  InterferenceInCrc = 41,
   G27to30InCycle = 44,
   QNotFound = 45,
   IllegalReferenceReturn = 46,
+  // lathe multiple repetitive cycles (G70-G76)
+  CycleAddressPQNotFound = 61,
+  CycleIllegalCommand = 62,
+  CycleSequenceNotFound = 63,
+  ShapeNotMonotonous = 64,
+  ShapeFirstBlockNotG00G01 = 65,
+  CycleUnavailableCommand = 66,
+  CycleNotInMemory = 67,
+  ShapeLastBlockIllegal = 69,
   ProgramNumberOutOfRange = 74,
   ProgramNotFound = 76,
   TooManySubNesting = 77,
@@ -53,6 +66,8 @@ enum class AlarmId : uint16_t {
   DuplicateNcMacro = 127,
   IllegalMacroSequence = 128,
   GAsArgument = 129,
+  OvertravelPlus = 500,   // shown as OT0500
+  OvertravelMinus = 501,  // shown as OT0501
   // ncvm limits and environment
   BlockLimit = 9001,
   TimeLimit = 9002,

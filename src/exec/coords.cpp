@@ -102,9 +102,8 @@ void Executor::applyToolShift() {
       toolShift_[2] = mode == 430 ? len : -len;
     }
   } else {
-    int t = modal_.tool;
-    int tool = t >= 100 ? t / 100 : t / 10;
-    int wear = t >= 100 ? t % 100 : t % 10;
+    int tool = latheToolNumber(modal_.tool);
+    int wear = latheWearNumber(modal_.tool);
     if (wear != 0 && wear < kToolRows) {
       const ToolOffsetRow& w = mem_.tools[static_cast<size_t>(wear)];
       const ToolOffsetRow& g = mem_.tools[static_cast<size_t>(tool < kToolRows ? tool : 0)];
@@ -180,12 +179,16 @@ void Executor::coordinateSetting(const Words& w) {
     auto s = static_cast<size_t>(k);
     if (!setup_.axes[s].present) continue;
     char a = kAxisLetters[k];
-    int64_t current = machine_[s] - offset_[s];
-    int64_t wanted;
-    if (w.has(a)) wanted = offsetNm(w.value(a), w.hasPoint(a), k);
-    else if (lathe_ && kInc[k] && w.has(kInc[k])) wanted = current + offsetNm(w.value(kInc[k]), w.hasPoint(kInc[k]), k);
-    else continue;
-    g92_[s] += current - wanted;
+    bool incremental = lathe_ && kInc[k] && w.has(kInc[k]);
+    if (!w.has(a) && !incremental) continue;
+    // The wanted coordinate; U/W count from the position shown before the command.
+    int64_t shown = machine_[s] - offset_[s];
+    int64_t wanted = w.has(a) ? offsetNm(w.value(a), w.hasPoint(a), k)
+                              : shown + offsetNm(w.value(kInc[k]), w.hasPoint(kInc[k]), k);
+    // G92 cancels the local coordinate system (G52) on the axes it names.
+    g52_[s] = 0;
+    recomputeOffset();
+    g92_[s] += (machine_[s] - offset_[s]) - wanted;
     recomputeOffset();
     eventName_ = "G92";
     sink_.onOffset(OffsetEvent{origin_, "shift", eventName_, k, toProgramUnits(g92_[s], k, true)});
@@ -206,11 +209,11 @@ void Executor::checkStroke(const std::array<int64_t, kMaxAxes>& toMachine) {
     const AxisConfig& a = setup_.axes[static_cast<size_t>(k)];
     if (!a.present) continue;
     double pos = toProgramUnits(toMachine[static_cast<size_t>(k)], k, true);
-    double unit = modal_.unit == InputUnit::Inch ? 25.4 : 1.0;  // limits are in mm
+    double unit = (modal_.unit == InputUnit::Inch && !a.rotary) ? 25.4 : 1.0;  // limits in mm / deg
     if (pos * unit > a.max + 1e-9)
-      throw AlarmError("OT0500", fmt::format("+ OVERTRAVEL ( SOFT 1 ) {} {:.3f} > {:.3f}", a.name, pos * unit, a.max));
+      throw AlarmError(AlarmId::OvertravelPlus, fmt::format("{} {:.3f} > {:.3f}", a.name, pos * unit, a.max));
     if (pos * unit < a.min - 1e-9)
-      throw AlarmError("OT0501", fmt::format("- OVERTRAVEL ( SOFT 1 ) {} {:.3f} < {:.3f}", a.name, pos * unit, a.min));
+      throw AlarmError(AlarmId::OvertravelMinus, fmt::format("{} {:.3f} < {:.3f}", a.name, pos * unit, a.min));
   }
 }
 
@@ -273,9 +276,9 @@ bool Executor::offsetVariable(int64_t n, Value* read, const Value* write) {
         else setTip(row, static_cast<int>(std::llround(write->asNumber())));
         return true;
       case 4: return toolVar(row, kFieldY, true, 1);
-      case 6: return toolVar(row, kFieldXorH, false, 0);
-      case 7: return toolVar(row, kFieldZ, false, 2);
-      case 8: return toolVar(row, kFieldRorD, false, 2);
+      case 7: return toolVar(row, kFieldXorH, false, 0);
+      case 8: return toolVar(row, kFieldZ, false, 2);
+      case 9: return toolVar(row, kFieldRorD, false, 2);
       default: return false;
     }
   }

@@ -75,13 +75,12 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
   std::array<int64_t, kMaxAxes> step{};
   for (size_t k = 0; k < kMaxAxes; ++k) step[k] = planeTarget[k] - here[k];
 
+  const std::array<int64_t, kMaxAxes> first = here;
   for (int n = 0; n < repeats; ++n) {
-    std::array<int64_t, kMaxAxes> hole = here;
+    std::array<int64_t, kMaxAxes> hole = first;
     for (size_t k = 0; k < kMaxAxes; ++k)
-      if (k != A) hole[k] = modal_.incremental ? here[k] + step[k] * (n + 1) : planeTarget[k];
+      if (k != A) hole[k] = modal_.incremental ? first[k] + step[k] * (n + 1) : planeTarget[k];
     drillOneHole(hole, code, axis);
-    here = hole;
-    here[A] = machine_[A] - offset_[A];
   }
   return true;
 }

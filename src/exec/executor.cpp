@@ -62,18 +62,17 @@ Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
   initMemoryFromSetup();
   for (const auto& [n, v] : setup.initialVars)
     if (n < 500) writeVar(n, Value::num(v));
+  restartFromMemory();
+}
+
+void Executor::restartFromMemory() {
   // Solids in a work frame are placed with the offsets the run starts with.
-  probeWorld_ = SolidWorld::fromSetup(setup, [&](int index) {
+  probeWorld_ = SolidWorld::fromSetup(setup_, [&](int index) {
     Vec3 v{};
     for (size_t k = 0; k < 3; ++k)
       v[k] = static_cast<double>(mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(index)][k]) / 1e6;
     return v;
   });
-  recomputeOffset();
-  for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
-}
-
-void Executor::restartFromMemory() {
   recomputeOffset();
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
 }
@@ -232,7 +231,7 @@ EndReason Executor::run(const Program& main) {
     at.file = a.loc.file;
     at.line = a.loc.line;
     at.n = a.n ? static_cast<int32_t>(*a.n) : -1;
-    if (!at.programName) at.programName = &main.name;
+    if (!at.programName) at.programName = &main.label;
     sink_.onAlarm(AlarmEvent{at, a.code, a.text});
     endReason_ = (a.code == alarmCode(AlarmId::BlockLimit) || a.code == alarmCode(AlarmId::TimeLimit))
                      ? EndReason::Limit
@@ -257,8 +256,9 @@ bool Executor::step() {
   }
   const Block& b = prog.blocks[f.pc];
   block_ = &b;
-  if (++stats_.blocks > setup_.limits.maxBlocks)
+  if (stats_.blocks >= setup_.limits.maxBlocks)
     throw AlarmError(AlarmId::BlockLimit, fmt::format("limits.max_blocks = {}", setup_.limits.maxBlocks));
+  ++stats_.blocks;
   if (b.skipLevel && setup_.blockSkip[b.skipLevel]) {
     ++f.pc;
     return true;

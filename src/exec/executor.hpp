@@ -209,6 +209,7 @@ class Executor {
   void execNc(const Block& b);
   void gatherWords(const Block& b, Words& w);
   bool codeCall(const Block& b, Words& w);
+  void buildArgs(const Words& w, int callingM, std::array<Value, 33>& args, std::array<double, 33>& scale) const;
   void macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
                           bool codeCalled, int callingM = -1);
   void applyModalG(int code10, const GCodeInfo& info);
@@ -249,6 +250,11 @@ class Executor {
 
   // probe.cpp
   void skipMove(const Words& w);
+
+  // Lathe T code: tool (geometry) number and wear offset number. Four digits Tttoo; two
+  // digits T to (tool t, offset o).
+  static int latheToolNumber(int t) { return t >= 100 ? t / 100 : t / 10; }
+  static int latheWearNumber(int t) { return t >= 100 ? t % 100 : t % 10; }
 
   // drill_cycles.cpp
   struct DrillCycle {

@@ -60,10 +60,11 @@ bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target
     const AxisConfig& a = setup_.axes[s];
     char absL = kAbs[k], incL = lathe_ ? kInc[k] : 0;
     if (!a.present) {
-      bool named = w.has(absL) && (k >= 3 || lathe_);
+      // B without a B axis is the second auxiliary function, not an axis.
+      bool named = w.has(absL) && (k >= 3 || lathe_) && absL != 'B';
       if (!lathe_ && k < 3) named = false;
       if (lathe_ && incL && w.has(incL) && k != 5) named = true;
-      if (named || (!lathe_ && w.has(absL) && k >= 3)) {
+      if (named || (!lathe_ && w.has(absL) && k >= 3 && absL != 'B')) {
         AlarmError e(AlarmId::ImproperAddress, fmt::format("{}: the machine has no such axis", w.has(absL) ? absL : incL));
         e.col = w.col[static_cast<size_t>((w.has(absL) ? absL : incL) - 'A')];
         throw e;
@@ -340,7 +341,7 @@ void Executor::referenceReturn(const Words& w, int which) {
   std::array<int64_t, kMaxAxes> toM = machine_;
   for (size_t k = 0; k < kMaxAxes; ++k)
     if (mask & (1u << k)) toM[k] = mid[k] + offset_[k];
-  rapidMachine(toM, mask);
+  if (toM != machine_) rapidMachine(toM, mask);  // no leg when already at the intermediate point
   for (size_t k = 0; k < kMaxAxes; ++k) {
     if (!(mask & (1u << k))) continue;
     const AxisConfig& a = setup_.axes[k];
@@ -349,7 +350,7 @@ void Executor::referenceReturn(const Words& w, int which) {
     int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
     toM[k] = a.diameter ? nm / 2 : nm;
   }
-  rapidMachine(toM, mask);
+  if (toM != machine_) rapidMachine(toM, mask);
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
 }
 

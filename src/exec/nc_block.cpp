@@ -101,17 +101,19 @@ void Executor::gatherWords(const Block& b, Words& w) {
   }
 }
 
-void Executor::macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
-                                  bool codeCalled, int callingM) {
-  std::array<Value, 33> args{};
-  std::array<double, 33> scale{};
-  // Argument specification I and II in one pass: I/J/K open a new set when the same or an
-  // earlier letter of I-J-K appears again; a later letter overrides an earlier one.
+// Argument specification I and II in one pass (fanuc-reference B.7): I/J/K open a new set
+// when the same or an earlier letter of I-J-K appears again; a later letter overrides an
+// earlier one on the same variable. `callingM` is the M code of an M-code call, which is
+// not an argument.
+void Executor::buildArgs(const Words& w, int callingM, std::array<Value, 33>& args,
+                         std::array<double, 33>& scale) const {
+  args.fill(Value{});
+  scale.fill(0);
   int set = 0, lastIjk = 3;
   for (int k = 0; k < w.nArgs; ++k) {
     const Words::Arg& a = w.args[static_cast<size_t>(k)];
     if (a.letter == 'M' && callingM >= 0 && std::llround(a.value) == callingM) {
-      callingM = -1;  // the M code that makes the call is not an argument
+      callingM = -1;
       continue;
     }
     int var = kArgVar[a.letter - 'A'];
@@ -135,6 +137,13 @@ void Executor::macroCallFromWords(const Program* p, int repeats, const Words& w,
     args[static_cast<size_t>(var - 1)] = Value::num(v);
     scale[static_cast<size_t>(var - 1)] = undo;
   }
+}
+
+void Executor::macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
+                                  bool codeCalled, int callingM) {
+  std::array<Value, 33> args;
+  std::array<double, 33> scale;
+  buildArgs(w, callingM, args, scale);
   callMacro(p, repeats, args, scale, kind, codeCalled);
 }
 
@@ -203,36 +212,10 @@ void Executor::execNc(const Block& b) {
       macroCallFromWords(p, repeats, w, FrameKind::Macro, false);
     } else {
       // Arguments are fixed now; the call happens after each later block that moves.
-      Words copy = w;
-      std::array<Value, 33> args{};
-      std::array<double, 33> scale{};
-      // Reuse the argument mapping by building it into a temporary frame-less table.
       ModalCall mc;
       mc.prog = p;
       mc.repeats = repeats;
-      int set = 0, lastIjk = 3;
-      for (int k = 0; k < copy.nArgs; ++k) {
-        const Words::Arg& a = copy.args[static_cast<size_t>(k)];
-        int var = kArgVar[a.letter - 'A'];
-        if (a.letter == 'I' || a.letter == 'J' || a.letter == 'K') {
-          int idx = a.letter - 'I';
-          if (set == 0 || idx <= lastIjk) ++set;
-          lastIjk = idx;
-          var = 3 * set + 1 + idx;
-        }
-        if (var == 0 || var > 33) continue;
-        double v = a.value, undo = 0;
-        if (!a.point && !dpi_ && std::strchr("XYZIJKRQUVWABC", a.letter)) {
-          bool angular = a.letter == 'A' || a.letter == 'B' || a.letter == 'C';
-          double lii = leastIncrement(setup_.increment, angular ? InputUnit::Mm : modal_.unit);
-          v *= lii;
-          undo = 1.0 / lii;
-        }
-        args[static_cast<size_t>(var - 1)] = Value::num(v);
-        scale[static_cast<size_t>(var - 1)] = undo;
-      }
-      mc.args = args;
-      mc.scale = scale;
+      buildArgs(w, -1, mc.args, mc.scale);
       modalCalls_.push_back(mc);
       modal_.g[12] = 660;
     }
@@ -304,7 +287,11 @@ void Executor::execNc(const Block& b) {
     modal_.feed = fv;
   }
   if (w.has('E')) modal_.e = w.value('E');
-  if (w.has('B') && setup_.axisSlot('B') < 0) modal_.b = w.value('B');
+  if (w.has('B') && setup_.axisSlot('B') < 0) {
+    // Without a B axis, B is the second auxiliary function, passed to the machine.
+    modal_.b = w.value('B');
+    sink_.onAux(AuxEvent{origin_, 'B', static_cast<int>(std::llround(modal_.b))});
+  }
   if (w.has('H') && !lathe_) {
     int h = integerWord(w, 'H');
     if (h < 0 || h >= kToolRows) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("H{}", h));
@@ -329,7 +316,7 @@ void Executor::execNc(const Block& b) {
       // T code call (6001#5): the rest of the block runs first, then O9000 with #149 = T.
       w.tCall = true;
     }
-    if (!w.tCall) sink_.onTool(ToolEvent{origin_, lathe_ ? modal_.tool / 100 : modal_.tool, false});
+    if (!w.tCall) sink_.onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, false});
     if (lathe_ && !w.tCall) applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
   }
   auxFunctions(w);
@@ -420,7 +407,7 @@ void Executor::auxFunctions(Words& w) {
         break;
       case 6:
         modal_.lastM = m;
-        sink_.onTool(ToolEvent{origin_, modal_.tool, true});
+        sink_.onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, true});
         break;
       case 7:
       case 8:

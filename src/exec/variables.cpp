@@ -68,7 +68,7 @@ Value Executor::readSystem(int64_t n) {
   if (n >= 4001 && n <= 4030) return Value::num(modal_.g[static_cast<size_t>(n - 4000)] / 10.0);
   if (n >= 4201 && n <= 4230) return Value::num(modal_.g[static_cast<size_t>(n - 4200)] / 10.0);
   if ((n >= 4102 && n <= 4130) || (n >= 4302 && n <= 4330)) {
-    int64_t k = n >= 4300 ? n - 4200 : n;
+    int64_t k = n >= 4300 ? n - 200 : n;
     switch (k) {
       case 4102: return Value::num(modal_.b);
       case 4107: return Value::num(modal_.dOffset);

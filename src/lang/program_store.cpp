@@ -34,6 +34,10 @@ std::vector<const Program*> ProgramStore::addText(std::string_view text, const s
 
 std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
   std::error_code ec;
+  // The same file named twice (on the command line and inside a --lib folder) loads once.
+  std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
+  if (!ec && !loadedFiles_.insert(canonical).second) return {};
+  ec.clear();
   auto size = std::filesystem::file_size(path, ec);
   if (ec) throw std::runtime_error(fmt::format("{}: cannot read: {}", path, ec.message()));
   if (size > maxFileBytes_)

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "core/source.hpp"
@@ -40,6 +41,7 @@ class ProgramStore {
   std::unordered_map<int32_t, const Program*> byNumber_;
   std::unordered_map<std::string, const Program*> byName_;
   std::vector<std::string> warnings_;
+  std::unordered_set<std::string> loadedFiles_;
 };
 
 }  // namespace ncvm

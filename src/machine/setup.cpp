@@ -145,7 +145,12 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     else if (rest == "max_line_length") s.limits.maxLineLength = static_cast<uint32_t>(positive(static_cast<double>(asInteger(v, w))));
     else if (rest == "max_file_bytes") s.limits.maxFileBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
     else if (rest == "max_trace_bytes") s.limits.maxTraceBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
-    else if (rest == "macro_nesting") s.limits.macroNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "macro_nesting") {
+      int64_t n = asInteger(v, w);
+      // Locals #1-#33 exist for levels 0..15 (the main program and 15 macro levels).
+      if (n < 1 || n > 15) bad(w, "macro_nesting is 1 to 15");
+      s.limits.macroNesting = static_cast<int>(n);
+    }
     else if (rest == "subprogram_nesting") s.limits.subprogramNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
     else if (rest == "total_nesting") s.limits.totalNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
     else bad(w, "unknown key");

@@ -124,6 +124,13 @@ struct Setup {
   int mCodeSubCall(int m) const;    // 6071-6079 -> O9001-O9009
 
   int axisSlot(char name) const;  // -1 if the machine has no such axis
+  // Positions are reported as [X, Y, Z] plus A, B, C up to the last rotary axis present.
+  int reportedAxes() const {
+    int n = 3;
+    for (int k = 3; k < kMaxAxes; ++k)
+      if (axes[static_cast<size_t>(k)].present) n = k + 1;
+    return n;
+  }
 };
 
 // Defaults for a machine kind: axes, rapid rates, control limits.
