@@ -53,8 +53,9 @@ struct Options {
 };
 
 struct CrcError : std::runtime_error {
-  CrcError(AlarmId id, const std::string& detail, int tag)
-      : std::runtime_error(detail), id(id), tag(tag) {}
+  // Parameter names differ from the members: -Wshadow (an error here) rejects the same name.
+  CrcError(AlarmId alarm, const std::string& detail, int blockTag)
+      : std::runtime_error(detail), id(alarm), tag(blockTag) {}
   AlarmId id;
   int tag;  // block that raised it
 };
