@@ -1,5 +1,6 @@
 #include "app/machine_state.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
@@ -71,7 +72,8 @@ void memoryFromJson(const nlohmann::json& j, const Setup& setup, MachineMemory& 
     throw std::runtime_error(std::string("not an ncvm machine-state file (format ") + kFormat + ")");
   if (j.contains("vars")) {
     for (const auto& [key, value] : j["vars"].items()) {
-      int n = key.size() > 1 && key[0] == '#' ? std::stoi(key.substr(1)) : -1;
+      int n = -1;
+      if (key.size() > 1 && key[0] == '#') std::from_chars(key.data() + 1, key.data() + key.size(), n);
       if (n < 500 || n > 999 || !value.is_number()) throw std::runtime_error("vars: " + key);
       mem.common500[static_cast<size_t>(n - 500)] = Value::num(value.get<double>());
     }
@@ -91,7 +93,10 @@ void memoryFromJson(const nlohmann::json& j, const Setup& setup, MachineMemory& 
   if (j.contains("tool_offsets")) {
     bool lathe = setup.kind == MachineKind::Lathe;
     for (const auto& [num, row] : j["tool_offsets"].items()) {
-      int r = std::stoi(num);
+      int r = 0;
+      auto parsed = std::from_chars(num.data(), num.data() + num.size(), r);
+      if (parsed.ec != std::errc() || parsed.ptr != num.data() + num.size())
+        throw std::runtime_error("tool_offsets: \"" + num + "\" is not an offset number");
       if (r < 1 || r >= kToolRows || !row.is_object()) throw std::runtime_error("tool_offsets: " + num);
       ToolOffsetRow& t = mem.tools[static_cast<size_t>(r)];
       for (int f = 0; f < 4; ++f) {

@@ -39,6 +39,10 @@ struct MoveEvent {
   // coordinates, in the order the tool passes them.
   int pathPoints = 0;
   std::array<AxisArray, kMaxAxes> path{};
+  bool thread = false;  // G32/G33 and threading cycles: synchronised with the spindle
+  // Cutter compensation: end is the tool centre; programmedEnd is the programmed point.
+  bool compensated = false;
+  AxisArray programmedEnd{};
 };
 
 struct DwellEvent {

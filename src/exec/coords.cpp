@@ -63,7 +63,7 @@ void Executor::writeWorkOffset(int index, int slot, int64_t nm, bool add) {
   cell = value;
   recomputeOffset();
   eventName_ = workOffsetName(index);
-  sink_.onOffset(OffsetEvent{origin_, "work", eventName_, slot, toProgramUnits(value, slot, true)});
+  sink().onOffset(OffsetEvent{origin_, "work", eventName_, slot, toProgramUnits(value, slot, true)});
 }
 
 void Executor::writeToolOffset(int row, int field, bool wear, int64_t nm, bool add) {
@@ -77,7 +77,7 @@ void Executor::writeToolOffset(int row, int field, bool wear, int64_t nm, bool a
   static const char* latheNames[] = {"X", "Z", "R", "Y"};
   eventName_ = fmt::format("{}{} {}", lathe_ ? latheNames[field] : millNames[field], row, wear ? "wear" : "geometry");
   int slot = (lathe_ && field == kFieldXorH) ? 0 : 2;
-  sink_.onOffset(OffsetEvent{origin_, "tool", eventName_, -1, toProgramUnits(value, slot, true)});
+  sink().onOffset(OffsetEvent{origin_, "tool", eventName_, -1, toProgramUnits(value, slot, true)});
   applyToolShift();
 }
 
@@ -86,7 +86,7 @@ void Executor::setTip(int row, int tip) {
   if (tip < 0 || tip > 9) throw AlarmError(AlarmId::IllegalOffsetValueInG10, "imaginary tip 0-9");
   mem_.tools[static_cast<size_t>(row)].tip = tip;
   eventName_ = fmt::format("T{} tip", row);
-  sink_.onOffset(OffsetEvent{origin_, "tool", eventName_, -1, static_cast<double>(tip)});
+  sink().onOffset(OffsetEvent{origin_, "tool", eventName_, -1, static_cast<double>(tip)});
 }
 
 // The tool shift follows the modal state: G43/G44 with H on a mill (type A: always Z), the
@@ -134,7 +134,8 @@ void Executor::programmableDataInput(const Words& w) {
     return;
   }
   if (!lathe_) {
-    if (L < 10 || L > 13) throw AlarmError(AlarmId::IllegalPInG10, fmt::format("L{}", L));
+    if (L < 10 || L > 13)
+      throw AlarmError(AlarmId::IllegalPInG10, L < 0 ? std::string("G10 needs L") : fmt::format("L{}", L));
     if (P < 1 || P >= kToolRows) throw AlarmError(AlarmId::IllegalPInG10, fmt::format("P{}", P));
     if (!w.has('R')) return;
     int field = L <= 11 ? kFieldXorH : kFieldRorD;
@@ -165,7 +166,7 @@ void Executor::localCoordinates(const Words& w) {
     char a = kAxisLetters[k];
     g52_[static_cast<size_t>(k)] = offsetNm(w.value(a), w.hasPoint(a), k);
     eventName_ = "G52";
-    sink_.onOffset(OffsetEvent{origin_, "local", eventName_, k, toProgramUnits(g52_[static_cast<size_t>(k)], k, true)});
+    sink().onOffset(OffsetEvent{origin_, "local", eventName_, k, toProgramUnits(g52_[static_cast<size_t>(k)], k, true)});
   }
   recomputeOffset();
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
@@ -186,12 +187,16 @@ void Executor::coordinateSetting(const Words& w) {
     int64_t wanted = w.has(a) ? offsetNm(w.value(a), w.hasPoint(a), k)
                               : shown + offsetNm(w.value(kInc[k]), w.hasPoint(kInc[k]), k);
     // G92 cancels the local coordinate system (G52) on the axes it names.
-    g52_[s] = 0;
+    if (g52_[s] != 0) {
+      g52_[s] = 0;
+      eventName_ = "G52";
+      sink().onOffset(OffsetEvent{origin_, "local", eventName_, k, 0.0});
+    }
     recomputeOffset();
     g92_[s] += (machine_[s] - offset_[s]) - wanted;
     recomputeOffset();
     eventName_ = "G92";
-    sink_.onOffset(OffsetEvent{origin_, "shift", eventName_, k, toProgramUnits(g92_[s], k, true)});
+    sink().onOffset(OffsetEvent{origin_, "shift", eventName_, k, toProgramUnits(g92_[s], k, true)});
   }
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
 }

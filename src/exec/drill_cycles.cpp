@@ -107,12 +107,12 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
     e.at = origin_;
     e.time = cycle_.dwellMs / 1000.0;
     advanceTime(e.time);
-    sink_.onDwell(e);
+    sink().onDwell(e);
   };
   auto spindle = [&](SpindleDir d) {
     spindleDir_ = d == SpindleDir::Stop || d == SpindleDir::Orient ? spindleDir_ : d;
     spindleOn_ = d == SpindleDir::Cw || d == SpindleDir::Ccw;
-    sink_.onSpindle(SpindleEvent{origin_, d, spindleOn_ ? rpm_ : 0.0});
+    sink().onSpindle(SpindleEvent{origin_, d, spindleOn_ ? rpm_ : 0.0});
   };
   // The direction bottom -> R: pecks advance against it.
   const int64_t dir = bottom < rLevel ? -1 : 1;
@@ -200,7 +200,7 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
       feed(bottom);
       dwellMs();
       spindle(SpindleDir::Stop);
-      sink_.onMessage(MessageEvent{origin_, "G88: retract by hand, then cycle start", "G88"});
+      sink().onMessage(MessageEvent{origin_, "G88: retract by hand, then cycle start", "G88"});
       rapid(rLevel);
       spindle(spindleDir_);
       break;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ncvm {
@@ -18,8 +19,10 @@ const char* endReasonName(EndReason r) {
   return "eof";
 }
 
+EventSink& Executor::sink() { return deferring_ ? static_cast<EventSink&>(deferSink_) : realSink_; }
+
 Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
-    : setup_(setup), store_(store), sink_(sink), series_(setup.series()),
+    : setup_(setup), store_(store), realSink_(sink), series_(setup.series()),
       lathe_(setup.kind == MachineKind::Lathe), dpi_(setup.dpi()) {
   for (const auto& g : gcodeTable())
     if ((g.seriesMask & seriesBit(series_)) && g.code10 >= 0 && g.code10 < 1000) gInfo_[static_cast<size_t>(g.code10)] = &g;
@@ -213,6 +216,7 @@ EndReason Executor::run(const Program& main) {
     enter(&main, FrameKind::Main, 1, false);
     while (step()) {
     }
+    crcDrain();  // the end of the program releases whatever compensation still holds
   } catch (const AlarmError& e) {
     Alarm a;
     a.code = e.code();
@@ -232,7 +236,13 @@ EndReason Executor::run(const Program& main) {
     at.line = a.loc.line;
     at.n = a.n ? static_cast<int32_t>(*a.n) : -1;
     if (!at.programName) at.programName = &main.label;
-    sink_.onAlarm(AlarmEvent{at, a.code, a.text});
+    // Deferred events that happened before the alarm are output first.
+    pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [](const Pending& p) { return p.tag >= 0; }),
+                   pending_.end());
+    deferring_ = false;
+    for (auto& p : pending_) p.action();
+    pending_.clear();
+    realSink_.onAlarm(AlarmEvent{at, a.code, a.text});
     endReason_ = (a.code == alarmCode(AlarmId::BlockLimit) || a.code == alarmCode(AlarmId::TimeLimit))
                      ? EndReason::Limit
                      : EndReason::Alarm;
@@ -268,6 +278,7 @@ bool Executor::step() {
   origin_.line = b.loc.line;
   origin_.n = b.n;
   origin_.programName = &prog.label;
+  deferring_ = !lathe_ && crcBusy();
   switch (b.kind) {
     case BlockKind::Empty:
       ++f.pc;

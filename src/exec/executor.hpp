@@ -6,6 +6,9 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <deque>
+#include <functional>
+#include <unordered_map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +22,8 @@
 #include "lang/program_store.hpp"
 #include "machine/offsets.hpp"
 #include "machine/setup.hpp"
+#include "motion/cutter_comp.hpp"
+#include "motion/lathe_cycles.hpp"
 #include "sim/probe_world.hpp"
 
 namespace ncvm {
@@ -96,7 +101,9 @@ class Executor {
   // ---- configuration ----
   const Setup& setup_;
   ProgramStore& store_;
-  EventSink& sink_;
+  EventSink& realSink_;
+  // Events go to the caller's sink, or are deferred while cutter compensation holds blocks.
+  EventSink& sink();
   Series series_;
   bool lathe_;
   bool dpi_;
@@ -220,9 +227,13 @@ class Executor {
   // motion.cpp
   int64_t lengthNm(double v, bool point, int slot) const;
   double toProgramUnits(int64_t nm, int slot, bool diameter) const;
-  bool axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask);
+  // Targets of the block's axis words; incremental words count from `base` (default: the
+  // current work position).
+  bool axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask,
+                   const std::array<int64_t, kMaxAxes>* base = nullptr);
   void moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t axesMask);
   void arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw);
+  void arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu, double cv, bool cw);
   void rapidMachine(const std::array<int64_t, kMaxAxes>& targetMachine, uint32_t axesMask);
   void emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
                 const std::array<int64_t, kMaxAxes>& toMachine);
@@ -268,6 +279,75 @@ class Executor {
   void cancelCycle();
   bool drillCycle(const Words& w, bool cycleCommanded);
   void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis);
+
+  // lathe_cycle_exec.cpp
+  enum LatheCycleKind {
+    kNoCycle = 0, kTurn, kThread, kFace, kFinish, kRoughTurn, kRoughFace, kPattern, kFacePeck, kGroove, kMultiThread
+  };
+  struct LatheCycleState {
+    double depth = 1.0, retract = 0.5;  // G71/G72 first block (parameters 5132/5133)
+    double reliefX = 0, reliefZ = 0;    // G73 first block
+    int divisions = 1;
+    double taper = 0;                   // G90/G92/G94 R, modal
+    double peckRetract = 0;             // G74/G75 first block (parameter 5139)
+    lathe::ThreadParams thread;         // G76 first block
+  };
+  LatheCycleState latheCyc_;
+  int latheCycleKind(int code10) const;
+  lathe::Pt latheHere() const;
+  lathe::Pt latheTarget(const Words& w, const lathe::Pt& from) const;
+  double latheLength(const Words& w, char letter, bool diameter) const;
+  double latheIncrements(const Words& w, char letter) const;
+  lathe::Contour readContour(int ns, int nf, std::vector<double>& feeds, uint32_t& lastBlock);
+  void runLathePlan(const std::vector<lathe::Move>& moves, const std::vector<double>* contourFeeds, double lead);
+  bool latheCycle(const Words& w, int kind);
+
+  // crc_exec.cpp: cutter compensation C
+  struct DeferSink final : EventSink {
+    Executor* ex;
+    explicit DeferSink(Executor* e) : ex(e) {}
+    void onMove(const MoveEvent& e) override;
+    void onDwell(const DwellEvent& e) override;
+    void onMessage(const MessageEvent& e) override;
+    void onAlarm(const AlarmEvent& e) override;
+    void onTool(const ToolEvent& e) override;
+    void onSpindle(const SpindleEvent& e) override;
+    void onCoolant(const CoolantEvent& e) override;
+    void onAux(const AuxEvent& e) override;
+    void onOffset(const OffsetEvent& e) override;
+    void onSkip(const SkipEvent& e) override;
+  };
+  struct Pending {
+    int tag = -1;                   // >= 0: a compensated move waiting for its path
+    bool closed = false;            // its path is complete
+    std::vector<crc::OutSeg> segs;
+    std::function<void()> action;   // tag < 0: anything else the block did
+  };
+  struct CrcBlock {
+    EventOrigin origin;
+    std::array<int64_t, kMaxAxes> target{};
+    double feed = 0;
+    int plane = 17;
+    AxisArray programmedEnd{};
+  };
+  DeferSink deferSink_{this};
+  bool deferring_ = false;
+  std::deque<Pending> pending_;
+  std::unordered_map<int, CrcBlock> crcBlocks_;
+  std::unique_ptr<crc::Compensator> crc_;
+  int crcTag_ = 0;
+  const AxisArray* programmedEnd_ = nullptr;  // set while emitting a compensated move
+  bool threadMove_ = false;                   // set while emitting a threading move
+  void deferEvent(std::function<void(EventSink&)> replay);
+  bool crcBusy() const;
+  double crcRadius() const;
+  void ensureCompensator();
+  void crcOutput(const crc::OutSeg& s);
+  void releasePending(bool all);
+  void crcDrain();
+  bool crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
+  void arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std::array<int64_t, kMaxAxes>& targetWork,
+                 const Words& w, bool cw, double& cu, double& cv);
 
   // print.cpp
   void print(const Block& b);

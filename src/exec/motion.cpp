@@ -49,8 +49,9 @@ AxisArray Executor::machinePosition() const {
 }
 
 // Target work position of the block's axis words. Returns false when no axis is named.
-bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& mask) {
-  for (size_t k = 0; k < kMaxAxes; ++k) target[k] = machine_[k] - offset_[k];
+bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& mask,
+                           const std::array<int64_t, kMaxAxes>* base) {
+  for (size_t k = 0; k < kMaxAxes; ++k) target[k] = base ? (*base)[k] : machine_[k] - offset_[k];
   mask = 0;
   static constexpr char kAbs[kMaxAxes] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
   // Lathe system A: U V W H are the incremental forms of X Y Z C.
@@ -111,6 +112,11 @@ double Executor::effectiveFeed() {
 void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
                         const std::array<int64_t, kMaxAxes>& toMachine) {
   e.at = origin_;
+  e.thread = threadMove_;
+  if (programmedEnd_) {
+    e.compensated = true;
+    e.programmedEnd = *programmedEnd_;
+  }
   for (int k = 0; k < kMaxAxes; ++k) {
     auto s = static_cast<size_t>(k);
     e.mstart[s] = toProgramUnits(fromMachine[s], k, true);
@@ -122,13 +128,13 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
   if (e.mode == MoveMode::Rapid) stats_.rapidLength += e.length;
   else stats_.feedLength += e.length;
   advanceTime(e.time);
-  sink_.onMove(e);
+  sink().onMove(e);
   if (modal_.css && spindleOn_) {
     // Constant surface speed: the spindle follows X; report the rpm at the move's end.
     double rpm = cssRpmAt(toMachine[0]);
     if (rpm != rpm_) {
       rpm_ = rpm;
-      sink_.onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
+      sink().onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
     }
   }
 }
@@ -216,32 +222,48 @@ void Executor::moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode 
   machine_ = toM;
 }
 
+namespace {
+// Plane axes (u, v) and normal n: (u, v, n) is right-handed, so G02 is clockwise seen from
+// +n in every plane (G17: X Y Z, G18: Z X Y, G19: Y Z X).
+struct PlaneAxes {
+  size_t u, v, n;
+  char cu, cv;
+};
+PlaneAxes planeAxes(int plane) {
+  if (plane == 18) return {2, 0, 1, 'K', 'I'};
+  if (plane == 19) return {1, 2, 0, 'J', 'K'};
+  return {0, 1, 2, 'I', 'J'};
+}
+}  // namespace
+
 void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw) {
-  // Plane axes (u, v), the normal axis n and the centre words of each plane; (u, v, n) is
-  // right-handed, so G02 is clockwise seen from +n in every plane.
-  int u = 0, v = 1, n = 2;
-  char cu = 'I', cv = 'J';
-  if (modal_.plane == 18) u = 2, v = 0, n = 1, cu = 'K', cv = 'I';
-  else if (modal_.plane == 19) u = 1, v = 2, n = 0, cu = 'J', cv = 'K';
-  auto U = static_cast<size_t>(u), V = static_cast<size_t>(v), N = static_cast<size_t>(n);
-  if (modal_.motion != 20 && modal_.motion != 30) return;
-  double feed = effectiveFeed();
+  const PlaneAxes pa = planeAxes(modal_.plane);
   std::array<int64_t, kMaxAxes> startW;
   for (size_t k = 0; k < kMaxAxes; ++k) startW[k] = machine_[k] - offset_[k];
-  double su = static_cast<double>(startW[U]), sv = static_cast<double>(startW[V]);
-  double eu = static_cast<double>(targetWork[U]), ev = static_cast<double>(targetWork[V]);
+  if (w.has('R') && startW[pa.u] == targetWork[pa.u] && startW[pa.v] == targetWork[pa.v]) {
+    // An R arc that ends where it starts is a zero-length arc (no movement in the plane).
+    if (targetWork != startW) moveTo(targetWork, MoveMode::Linear, 0);
+    return;
+  }
+  double cu0 = 0, cv0 = 0;
+  arcCenter(startW, targetWork, w, cw, cu0, cv0);
+  arcWithCenter(targetWork, cu0, cv0, cw);
+}
+
+// The centre of an arc block (R or I/J/K) in the plane, work coordinates in nm.
+void Executor::arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std::array<int64_t, kMaxAxes>& targetWork,
+                         const Words& w, bool cw, double& cu0, double& cv0) {
+  const PlaneAxes pa = planeAxes(modal_.plane);
+  double su = static_cast<double>(startW[pa.u]), sv = static_cast<double>(startW[pa.v]);
+  double eu = static_cast<double>(targetWork[pa.u]), ev = static_cast<double>(targetWork[pa.v]);
   double tolNm = arcTolerance_ * 1e6;
-  double cu0 = su, cv0 = sv;
+  cu0 = su;
+  cv0 = sv;
   if (w.has('R')) {
-    double r = static_cast<double>(lengthNm(w.value('R'), w.hasPoint('R'), u));
+    double r = static_cast<double>(lengthNm(w.value('R'), w.hasPoint('R'), static_cast<int>(pa.u)));
     double du = eu - su, dv = ev - sv;
     double d = std::hypot(du, dv);
-    if (d == 0) {
-      // An R arc that ends where it starts is a zero-length arc (no movement in the plane).
-      std::array<int64_t, kMaxAxes> t = targetWork;
-      if (t != startW) moveTo(t, MoveMode::Linear, 0);
-      return;
-    }
+    if (d == 0) return;
     double h2 = r * r - d * d / 4.0;
     if (h2 < 0) {
       if (d / 2.0 - std::fabs(r) > tolNm)
@@ -253,20 +275,31 @@ void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Word
     double side = (cw ? -1.0 : 1.0) * (r < 0 ? -1.0 : 1.0);
     cu0 = (su + eu) / 2.0 + side * h * pu;
     cv0 = (sv + ev) / 2.0 + side * h * pv;
-  } else {
-    if (!w.has(cu) && !w.has(cv)) throw AlarmError(AlarmId::NoRadiusOrCenter);
-    // I, J, K are incremental from the start point and always radius values.
-    auto centerNm = [&](char c, int axis) {
-      return w.has(c) ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), axis)) : 0.0;
-    };
-    cu0 = su + centerNm(cu, u);
-    cv0 = sv + centerNm(cv, v);
-    double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
-    if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
-    if (std::fabs(re - rs) > tolNm)
-      throw AlarmError(AlarmId::OverToleranceOfRadius,
-                       fmt::format("end radius differs by {:.4f} mm", std::fabs(re - rs) / 1e6));
+    return;
   }
+  if (!w.has(pa.cu) && !w.has(pa.cv)) throw AlarmError(AlarmId::NoRadiusOrCenter);
+  // I, J, K are incremental from the start point and always radius values.
+  auto centerNm = [&](char c, size_t axis) {
+    return w.has(c) ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), static_cast<int>(axis))) : 0.0;
+  };
+  cu0 = su + centerNm(pa.cu, pa.u);
+  cv0 = sv + centerNm(pa.cv, pa.v);
+  double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
+  if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
+  if (std::fabs(re - rs) > tolNm)
+    throw AlarmError(AlarmId::OverToleranceOfRadius,
+                     fmt::format("end radius differs by {:.4f} mm", std::fabs(re - rs) / 1e6));
+}
+
+// An arc from the current position to targetWork around the centre (cu, cv) of the plane
+// (work coordinates, nm); the other axes move linearly (helix).
+void Executor::arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu0, double cv0, bool cw) {
+  const PlaneAxes pa = planeAxes(modal_.plane);
+  double feed = effectiveFeed();
+  std::array<int64_t, kMaxAxes> startW;
+  for (size_t k = 0; k < kMaxAxes; ++k) startW[k] = machine_[k] - offset_[k];
+  double su = static_cast<double>(startW[pa.u]), sv = static_cast<double>(startW[pa.v]);
+  double eu = static_cast<double>(targetWork[pa.u]), ev = static_cast<double>(targetWork[pa.v]);
   double r = std::hypot(su - cu0, sv - cv0);
   double as = std::atan2(sv - cv0, su - cu0), ae = std::atan2(ev - cv0, eu - cu0);
   double sweep = cw ? as - ae : ae - as;
@@ -279,7 +312,7 @@ void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Word
   double arcLen = r * sweep / unitNm;
   double lin = 0;
   for (size_t k = 0; k < kMaxAxes; ++k) {
-    if (k == U || k == V) continue;
+    if (k == pa.u || k == pa.v) continue;
     double dk = toProgramUnits(targetWork[k] - startW[k], static_cast<int>(k), false);
     lin += dk * dk;
   }
@@ -291,9 +324,9 @@ void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Word
   e.length = std::sqrt(arcLen * arcLen + lin);
   e.time = feed > 0 ? e.length / feed * 60.0 : 0.0;
   std::array<int64_t, kMaxAxes> centerW = startW;
-  centerW[U] = static_cast<int64_t>(std::llround(cu0));
-  centerW[V] = static_cast<int64_t>(std::llround(cv0));
-  centerW[N] = startW[N];
+  centerW[pa.u] = static_cast<int64_t>(std::llround(cu0));
+  centerW[pa.v] = static_cast<int64_t>(std::llround(cv0));
+  centerW[pa.n] = startW[pa.n];
   for (int k = 0; k < 3; ++k) e.center[static_cast<size_t>(k)] = toProgramUnits(centerW[static_cast<size_t>(k)], k, true);
   std::array<int64_t, kMaxAxes> toM, fromM = machine_;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = targetWork[k] + offset_[k];
@@ -326,7 +359,7 @@ void Executor::dwell(const Words& w) {
   }
   e.time = seconds;
   advanceTime(seconds);
-  sink_.onDwell(e);
+  sink().onDwell(e);
 }
 
 void Executor::referenceReturn(const Words& w, int which) {
@@ -355,6 +388,7 @@ void Executor::referenceReturn(const Words& w, int which) {
 }
 
 void Executor::returnFromReference(const Words& w) {
+  if (modal_.g[9] != 800 && !lathe_) throw AlarmError(AlarmId::G27to30InCycle);
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
   axisTargets(w, target, mask);
@@ -368,7 +402,7 @@ void Executor::returnFromReference(const Words& w) {
   if (g28MidSet_) {
     for (size_t k = 0; k < kMaxAxes; ++k)
       if (mask & (1u << k)) toM[k] = g28Mid_[k] + offset_[k];
-    rapidMachine(toM, mask);
+    if (toM != machine_) rapidMachine(toM, mask);
   }
   for (size_t k = 0; k < kMaxAxes; ++k)
     if (mask & (1u << k)) toM[k] = target[k] + offset_[k];

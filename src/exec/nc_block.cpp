@@ -259,6 +259,20 @@ void Executor::execNc(const Block& b) {
     if (!lathe_ && info.group == 1 && modal_.g[9] != 800) cancelCycle();
   }
   deriveModal();
+  const bool crcMode = !lathe_ && (modal_.g[7] != 400 || crcBusy());
+  if (crcMode) {
+    deferring_ = true;
+    // Blocks that stop buffering end the lookahead before they run.
+    bool stop = oneShot == 280 || oneShot == 300 || oneShot == 290 || oneShot == 530;
+    for (int k = 0; k < w.nm; ++k) {
+      int m = w.m[static_cast<size_t>(k)];
+      stop |= m == 0 || m == 1 || m == 2 || m == 30;
+    }
+    if (stop) {
+      crcDrain();
+      deferring_ = crcBusy();
+    }
+  }
   if (modal_.g[14] != workBefore || (w.has('P') && modal_.g[14] >= 540 && oneShot < 0 && [&] {
         for (int k = 0; k < w.ng; ++k)
           if (w.g[static_cast<size_t>(k)] / 10 == 54) return true;
@@ -290,7 +304,7 @@ void Executor::execNc(const Block& b) {
   if (w.has('B') && setup_.axisSlot('B') < 0) {
     // Without a B axis, B is the second auxiliary function, passed to the machine.
     modal_.b = w.value('B');
-    sink_.onAux(AuxEvent{origin_, 'B', static_cast<int>(std::llround(modal_.b))});
+    sink().onAux(AuxEvent{origin_, 'B', static_cast<int>(std::llround(modal_.b))});
   }
   if (w.has('H') && !lathe_) {
     int h = integerWord(w, 'H');
@@ -307,7 +321,7 @@ void Executor::execNc(const Block& b) {
     double before = rpm_;
     rpm_ = modal_.css ? cssRpmAt(machine_[0]) : modal_.speed;
     if (spindleOn_ && rpm_ != before) {
-      sink_.onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
+      sink().onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
     }
   }
   if (w.has('T')) {
@@ -316,7 +330,7 @@ void Executor::execNc(const Block& b) {
       // T code call (6001#5): the rest of the block runs first, then O9000 with #149 = T.
       w.tCall = true;
     }
-    if (!w.tCall) sink_.onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, false});
+    if (!w.tCall) sink().onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, false});
     if (lathe_ && !w.tCall) applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
   }
   auxFunctions(w);
@@ -325,6 +339,16 @@ void Executor::execNc(const Block& b) {
   bool moved = false;
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
+  // Lathe multiple repetitive cycles (one-shot) and single cycles (modal group 01).
+  if (lathe_) {
+    int kind = oneShot >= 0 ? latheCycleKind(oneShot) : 0;
+    int modalKind = latheCycleKind(modal_.motion);
+    if (kind || modalKind) {
+      moved = latheCycle(w, kind ? kind : modalKind);
+      programControl(w, moved);
+      return;
+    }
+  }
   switch (oneShot) {
     case 40:
       dwell(w);
@@ -357,8 +381,30 @@ void Executor::execNc(const Block& b) {
       moved = true;
       break;
     default: {
+      if (!lathe_ && (modal_.g[7] != 400 || crcBusy())) {
+        bool arc = modal_.motion == 20 || modal_.motion == 30;
+        axisTargets(w, target, mask, &programmed_);
+        moved = crcBlock(w, target, mask, arc, modal_.motion == 20);
+        break;
+      }
       if (!lathe_ && modal_.g[9] != 800) {
         moved = drillCycle(w, cycleCommanded);
+        break;
+      }
+      if (lathe_ && (modal_.motion == 320 || modal_.motion == 330)) {
+        // G32/G33: one threading move; F (or E) is the lead per spindle revolution.
+        if (axisTargets(w, target, mask)) {
+          double feed = modal_.feed;
+          bool perRev = modal_.feedPerRev;
+          modal_.feed = w.has('E') ? w.value('E') : modal_.feed;
+          modal_.feedPerRev = true;
+          threadMove_ = true;
+          moveTo(target, MoveMode::Linear, mask);
+          threadMove_ = false;
+          modal_.feed = feed;
+          modal_.feedPerRev = perRev;
+          moved = true;
+        }
         break;
       }
       bool arc = modal_.motion == 20 || modal_.motion == 30;
@@ -393,27 +439,27 @@ void Executor::auxFunctions(Words& w) {
         spindleDir_ = m == 3 ? SpindleDir::Cw : SpindleDir::Ccw;
         modal_.lastM = m;
         rpm_ = modal_.css ? cssRpmAt(machine_[0]) : modal_.speed;
-        sink_.onSpindle(SpindleEvent{origin_, m == 3 ? SpindleDir::Cw : SpindleDir::Ccw, rpm_});
+        sink().onSpindle(SpindleEvent{origin_, m == 3 ? SpindleDir::Cw : SpindleDir::Ccw, rpm_});
         break;
       case 5:
         spindleOn_ = false;
         modal_.lastM = m;
-        sink_.onSpindle(SpindleEvent{origin_, SpindleDir::Stop, 0});
+        sink().onSpindle(SpindleEvent{origin_, SpindleDir::Stop, 0});
         break;
       case 19:
         spindleOn_ = false;
         modal_.lastM = m;
-        sink_.onSpindle(SpindleEvent{origin_, SpindleDir::Orient, 0});
+        sink().onSpindle(SpindleEvent{origin_, SpindleDir::Orient, 0});
         break;
       case 6:
         modal_.lastM = m;
-        sink_.onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, true});
+        sink().onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, true});
         break;
       case 7:
       case 8:
       case 9:
         modal_.lastM = m;
-        sink_.onCoolant(CoolantEvent{origin_, m == 9 ? CoolantState::Off : m == 7 ? CoolantState::Mist : CoolantState::Flood});
+        sink().onCoolant(CoolantEvent{origin_, m == 9 ? CoolantState::Off : m == 7 ? CoolantState::Mist : CoolantState::Flood});
         break;
       default:
         if (int prog = m >= 0 && m < 1000 ? mSubCall_[static_cast<size_t>(m)] : 0; prog > 0 && !frames_.back().codeCalled) {
@@ -423,7 +469,7 @@ void Executor::auxFunctions(Words& w) {
           break;
         }
         modal_.lastM = m;
-        sink_.onAux(AuxEvent{origin_, 'M', m});
+        sink().onAux(AuxEvent{origin_, 'M', m});
         break;
     }
   }
@@ -438,10 +484,10 @@ void Executor::programControl(Words& w, bool moved) {
     int m = w.m[static_cast<size_t>(k)];
     if (m == 0) {
       modal_.lastM = 0;
-      sink_.onMessage(MessageEvent{origin_, comment, "M00"});
+      sink().onMessage(MessageEvent{origin_, comment, "M00"});
     } else if (m == 1) {
       modal_.lastM = 1;
-      if (setup_.optionalStop) sink_.onMessage(MessageEvent{origin_, comment, "M01"});
+      if (setup_.optionalStop) sink().onMessage(MessageEvent{origin_, comment, "M01"});
     } else if (m == 2 || m == 30) {
       modal_.lastM = m;
       if (f.kind == FrameKind::Main || true) {

@@ -20,8 +20,10 @@ void Executor::skipMove(const Words& w) {
   // tool's own diameter from [tools].
   double r = 0;
   const ProbeSpec& probe = setup_.probe;
-  auto tool = setup_.tools.find(modal_.tool);
-  if ((probe.tool < 0 || probe.tool == modal_.tool) && probe.ballDiameter > 0) r = probe.ballDiameter / 2;
+  // On a lathe the physical tool is the T code's tool number (T0101 -> tool 1).
+  int current = lathe_ ? latheToolNumber(modal_.tool) : modal_.tool;
+  auto tool = setup_.tools.find(current);
+  if ((probe.tool < 0 || probe.tool == current) && probe.ballDiameter > 0) r = probe.ballDiameter / 2;
   else if (tool != setup_.tools.end()) r = tool->second.diameter / 2;
 
   std::array<int64_t, kMaxAxes> fromM = machine_, toM;
@@ -68,7 +70,7 @@ void Executor::skipMove(const Words& w) {
     ev.position[static_cast<size_t>(k)] = toProgramUnits(skip_[static_cast<size_t>(k)], k, true);
     ev.mposition[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
   }
-  sink_.onSkip(ev);
+  sink().onSkip(ev);
   if (!t && probe.missAlarm) throw AlarmError(AlarmId::SkipNotReceived);
 }
 

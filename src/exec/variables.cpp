@@ -132,7 +132,7 @@ void Executor::writeSystem(int64_t n, Value v) {
     case 3005: sys3005_ = v.asNumber(); return;
     case 3006: {
       // Message stop: recorded; the run continues as if cycle start were pressed.
-      sink_.onMessage(MessageEvent{origin_, comment, "#3006"});
+      sink().onMessage(MessageEvent{origin_, comment, "#3006"});
       return;
     }
     case 3901: mem_.parts3901 = v.asNumber(); return;

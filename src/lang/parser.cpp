@@ -116,6 +116,7 @@ class Compiler {
   Type parseTerm();
   Type parseUnary();
   Type parsePrimary();
+  Op typedOp(Op op, Type a, Type b, uint32_t at) const;
   Type parseBracket();
   void parseVarRef();  // after '#'
   bool peekKeyword(const char* kw) const;
@@ -734,15 +735,21 @@ Type Compiler::parseSum() {
     else if (letterRun() == 3 && peekKeyword("XOR")) op = Op::Xor, len = 3;
     else return a;
     i_ += len;
-    Type b = parseTerm();
-    if (op == Op::Or || op == Op::Xor) {
-      if (a != b) fail(AlarmId::IllegalExpressionFormat, "mixing a condition and a value", at);
-      if (a == Type::Bool) op = op == Op::Or ? Op::LOr : Op::LXor;
-    } else if (a != Type::Num || b != Type::Num) {
-      fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
-    }
-    emit(op, at);
+    emit(typedOp(op, a, parseTerm(), at), at);
   }
+}
+
+// AND/OR/XOR are bitwise on values and logical on conditions (30i [[a]AND[b]]); every
+// other operator needs values.
+Op Compiler::typedOp(Op op, Type a, Type b, uint32_t at) const {
+  bool logical = op == Op::And || op == Op::Or || op == Op::Xor;
+  if (!logical) {
+    if (a != Type::Num || b != Type::Num) fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
+    return op;
+  }
+  if (a != b) fail(AlarmId::IllegalExpressionFormat, "mixing a condition and a value", at);
+  if (a == Type::Num) return op;
+  return op == Op::And ? Op::LAnd : op == Op::Or ? Op::LOr : Op::LXor;
 }
 
 Type Compiler::parseTerm() {
@@ -759,14 +766,7 @@ Type Compiler::parseTerm() {
     else if (letterRun() == 3 && peekKeyword("MOD")) op = Op::Mod, len = 3;
     else return a;
     i_ += len;
-    Type b = parseUnary();
-    if (op == Op::And) {
-      if (a != b) fail(AlarmId::IllegalExpressionFormat, "mixing a condition and a value", at);
-      if (a == Type::Bool) op = Op::LAnd;
-    } else if (a != Type::Num || b != Type::Num) {
-      fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
-    }
-    emit(op, at);
+    emit(typedOp(op, a, parseUnary(), at), at);
   }
 }
 

@@ -47,7 +47,7 @@ struct Move {
 
 // Raised for the cycle alarms PS0061-PS0069 (and PS0062 for bad depths).
 struct CycleError : std::runtime_error {
-  CycleError(AlarmId id, const std::string& detail) : std::runtime_error(detail), id(id) {}
+  CycleError(AlarmId alarm, const std::string& detail) : std::runtime_error(detail), id(alarm) {}
   AlarmId id;
 };
 

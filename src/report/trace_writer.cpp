@@ -104,6 +104,8 @@ void TraceWriter::onMove(const MoveEvent& e) {
   if (e.arc)
     fmt::format_to(std::back_inserter(buf_), ",\"center\":[{},{},{}],\"plane\":{}", e.center[0], e.center[1],
                    e.center[2], e.plane);
+  if (e.compensated) axes("prog_end", e.programmedEnd);
+  if (e.thread) buf_ += ",\"thread\":true";
   if (e.pathPoints > 0) {
     buf_ += ",\"path\":[";
     for (int k = 0; k < e.pathPoints; ++k) {
