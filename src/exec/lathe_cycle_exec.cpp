@@ -112,6 +112,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     s.end = latheTarget(w, at);
     if (motion == 20 || motion == 30) {
       s.kind = motion == 20 ? lathe::SegKind::ArcCw : lathe::SegKind::ArcCcw;
+      if (!w.any("RIK")) throw AlarmError(AlarmId::NoRadiusOrCenter, "G02/G03 between P and Q");
       if (w.has('R')) {
         double r = latheLength(w, 'R', false);
         double du = s.end.z - at.z, dv = s.end.x - at.x, d = std::hypot(du, dv);
@@ -239,8 +240,9 @@ bool Executor::latheCycle(const Words& w, int kind) {
         moves = plan([&] { return kind == kRoughTurn ? lathe::roughTurning(c, p) : lathe::roughFacing(c, p); });
       }
       runLathePlan(moves, nullptr, 0);
-      // G71-G73 consume the contour: the program goes on after its last block.
-      frames_.back().pc = last + 1;
+      // G71-G73 consume the contour: the program goes on after its last block (the caller
+      // still advances past the current block, so stop one short).
+      frames_.back().pc = last;
       return true;
     }
     case kFacePeck:

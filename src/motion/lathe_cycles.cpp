@@ -191,6 +191,8 @@ std::vector<Move> threadCycle(const Pt& start, const Pt& end, double taper, doub
   return mv.take();
 }
 
+namespace {
+
 // G74/G75 axes: `cut` is the pecking axis (Z for G74, X for G75), `across` the axis the
 // columns step along.
 struct PeckAxes {
@@ -202,48 +204,52 @@ struct PeckAxes {
 
 // One column at `a`: feed by `peck`, rapid back by e, feed peck + e, ..., the last peck
 // stopping exactly at c1 (a zero peck feeds straight to c1).
-void peckColumn(Moves& mv, const PeckAxes& ax, double c0, double c1, double a,
-                const PeckParams& p, int& count) {
+void peckColumn(Moves& mv, const PeckAxes& ax, double c0, double c1, double a, double peck,
+                double retract, int& count) {
   double sc = detail::sign(c1 - c0);
   if (sc == 0) return;
   for (double c = c0;;) {
     if (++count > kMaxRepeats)
       throw CycleError(AlarmId::CycleIllegalCommand, "G74/G75 too many pecks");
-    double next = p.peck > kEps ? c + sc * p.peck : c1;
+    double next = peck > kEps ? c + sc * peck : c1;
     if (sc * (next - c1) >= -kEps) next = c1;
     mv.feed(ax.at(next, a));
     if (next == c1) return;
-    mv.rapid(ax.at(next - sc * p.retract, a));
+    mv.rapid(ax.at(next - sc * retract, a));
     c = next;
   }
 }
 
-// G74 (alongX false) pecks along Z, with a column at every P along X up to the end X;
-// G75 (alongX true) is the same with X and Z swapped. `peck` is the depth of each peck
-// along the cutting axis and `step` the shift between columns, whichever address carried
-// them (G74: P = step in X, Q = peck in Z; G75: P = peck in X, Q = step in Z). At the
-// bottom of each column the tool backs off by the relief against the step direction (only
-// when the cycle steps), rapids back to the start level, then rapids across to the next
-// column (the last one shortened to end exactly at the end point); finally back to the start.
+}  // namespace
+
+// G74 (alongX false) pecks along Z, with a column at every shift along X up to the end X;
+// G75 (alongX true) is the same with X and Z swapped. As the addresses carry them, `step`
+// is P = di, the X amount (G74: the shift between columns, G75: the peck depth) and `peck`
+// is Q = dk, the Z amount (G74: the peck depth, G75: the shift). At the bottom of each
+// column the tool backs off by the relief against the shift direction (only when the cycle
+// shifts), rapids back to the start level, then rapids across to the next column (the last
+// one shortened to end exactly at the end point); finally back to the start point.
 std::vector<Move> peckCycle(const Pt& start, const Pt& end, const PeckParams& p, bool alongX) {
   if (p.retract < 0 || p.step < 0 || p.peck < 0 || p.relief < 0)
     throw CycleError(AlarmId::CycleIllegalCommand, "G74/G75 negative amount");
   PeckAxes ax{alongX};
+  double peck = alongX ? p.step : p.peck;
+  double shift = alongX ? p.peck : p.step;
   double c0 = ax.cut(start), c1 = ax.cut(end), a0 = ax.across(start), a1 = ax.across(end);
   double sa = detail::sign(a1 - a0);
-  if (sa != 0 && p.step <= kEps)
+  if (sa != 0 && shift <= kEps)
     throw CycleError(AlarmId::CycleIllegalCommand, "G74/G75 shift between passes is zero");
 
   Moves mv(start);
   int count = 0;
   for (double a = a0;;) {
     mv.rapid(ax.at(c0, a));
-    peckColumn(mv, ax, c0, c1, a, p, count);
+    peckColumn(mv, ax, c0, c1, a, peck, p.retract, count);
     double backedOff = a - sa * p.relief;
     mv.rapid(ax.at(c1, backedOff));
     mv.rapid(ax.at(c0, backedOff));
     if (sa == 0 || sa * (a - a1) >= -kEps) break;
-    a = sa * (a + sa * p.step - a1) >= -kEps ? a1 : a + sa * p.step;
+    a = sa * (a + sa * shift - a1) >= -kEps ? a1 : a + sa * shift;
   }
   mv.rapid(start);
   return mv.take();

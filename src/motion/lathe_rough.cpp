@@ -128,8 +128,8 @@ class Rougher {
     detail::appendPath(path_, s0, s1, false, out_);
     pos_ = detail::pointAt(path_, s1);
   }
-  // 45 degrees away from the part: up by e and back along the pass by e.
-  void retract() { go(SegKind::Line, {pos_.x + e_, pos_.z - e_}); }
+  // Away from the part by e, and back along the pass by `back` (e: 45 degrees).
+  void retract(double back) { go(SegKind::Line, {pos_.x + e_, pos_.z - back}); }
 
   // Rapid over everything between path positions sa and sb, then down to `to`.
   void travel(const Pt& to, double sa, double sb) {
@@ -181,7 +181,7 @@ class Rougher {
     double end = static_cast<double>(path_.size());
     if (!typeTwo_ || r.s1 >= end - kEps) {
       last_ = r.s1;
-      retract();
+      retract(e_);
       return false;
     }
     const Interval* wall = detail::containing(prevRegions_, r.s1);
@@ -193,7 +193,10 @@ class Rougher {
     }
     follow(r.s1, up);
     last_ = up;
-    retract();
+    // In a groove narrower than e the 45 degree retract would hit the entry wall: back off
+    // along the pass no further than that wall is at the previous level (steeper retract).
+    double room = wall && wall->s0 > kEps ? pos_.z - detail::pointAt(path_, wall->s0).z : e_;
+    retract(std::clamp(room, 0.0, e_));
     return false;
   }
 
