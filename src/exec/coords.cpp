@@ -201,6 +201,22 @@ void Executor::coordinateSetting(const Words& w) {
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
 }
 
+// G92.1 IP0: the work coordinate system preset. The G92 shift and the G52 local system go
+// away on the axes named, so the work system is again the one the offsets define.
+void Executor::coordinatePreset(const Words& w) {
+  for (int k = 0; k < kMaxAxes; ++k) {
+    auto s = static_cast<size_t>(k);
+    if (!setup_.axes[s].present || !w.has(kAxisLetters[k])) continue;
+    if (w.value(kAxisLetters[k]) != 0) throw AlarmError(AlarmId::ImproperGCode, "G92.1 takes IP0 only");
+    g92_[s] = 0;
+    g52_[s] = 0;
+    eventName_ = "G92";
+    sink().onOffset(OffsetEvent{origin_, "shift", eventName_, k, 0.0});
+  }
+  recomputeOffset();
+  for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+}
+
 double Executor::cssRpmAt(int64_t xMachine) const {
   double dia = std::fabs(toProgramUnits(xMachine - offset_[0], 0, true));
   double perMin = modal_.unit == InputUnit::Inch ? 12.0 : 1000.0;

@@ -255,6 +255,7 @@ class Executor {
   void programmableDataInput(const Words& w);  // G10
   void localCoordinates(const Words& w);       // G52
   void coordinateSetting(const Words& w);      // G92 / lathe G50
+  void coordinatePreset(const Words& w);       // G92.1: back to the work offsets
   bool offsetVariable(int64_t n, Value* read, const Value* write);
   double cssRpmAt(int64_t xMachine) const;
   void checkStroke(const std::array<int64_t, kMaxAxes>& toMachine);

@@ -133,6 +133,7 @@ const std::vector<GCodeInfo>& gcodeTable() {
       {910, M | TB | TC, 3, S, "incremental programming"},
       {900, TA, 1, S, "OD/ID cutting cycle"},
       {920, M, 0, S, "work coordinate system setting"},
+      {921, M, 0, S, "work coordinate system preset (cancels G92 and G52 on the named axes)"},
       {920, TB | TC, 0, S, "coordinate system setting / maximum spindle speed"},
       {920, TA, 1, S, "thread cutting cycle"},
       {940, M, 5, S, "feed per minute"},

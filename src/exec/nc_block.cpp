@@ -372,6 +372,9 @@ void Executor::execNc(const Block& b) {
     case 520:
       localCoordinates(w);
       break;
+    case 921:
+      coordinatePreset(w);
+      break;
     case 500:
     case 920:
       coordinateSetting(w);  // a lathe G50/G92 with only S was the spindle clamp above
