@@ -236,12 +236,14 @@ EndReason Executor::run(const Program& main) {
     at.line = a.loc.line;
     at.n = a.n ? static_cast<int32_t>(*a.n) : -1;
     if (!at.programName) at.programName = &main.label;
-    // Deferred events that happened before the alarm are output first.
-    pending_.erase(std::remove_if(pending_.begin(), pending_.end(), [](const Pending& p) { return p.tag >= 0; }),
-                   pending_.end());
-    deferring_ = false;
-    for (auto& p : pending_) p.action();
+    // Under cutter compensation the control still runs the held blocks whose path was
+    // complete when the alarm came; what follows the first incomplete one never happens.
+    try {
+      releasePending(false);
+    } catch (const AlarmError&) {
+    }
     pending_.clear();
+    deferring_ = false;
     realSink_.onAlarm(AlarmEvent{at, a.code, a.text});
     endReason_ = (a.code == alarmCode(AlarmId::BlockLimit) || a.code == alarmCode(AlarmId::TimeLimit))
                      ? EndReason::Limit
