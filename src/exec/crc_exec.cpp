@@ -169,6 +169,13 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       s.rapid = modal_.motion == 0;
       s.side = side;
       s.radius = crcRadius();
+      if (side != crc::Side::Off && s.radius == 0 && !warnedNoRadius_) {
+        // Old 0-M programs name the radius with H in the G41/G42 block; with D0 the path is
+        // not compensated at all, which must not pass silently.
+        warnedNoRadius_ = true;
+        warn("W005", w.has('H') ? "G41/G42 with D0 (H in the block is a length offset, not the radius): no compensation"
+                                : "G41/G42 with D0 or a zero D offset: no compensation");
+      }
       s.tag = tag;
       s.cornerArc = false;
       if (side == crc::Side::Off && w.any("IJK") && !arc) {

@@ -339,6 +339,7 @@ class Executor {
   int crcTag_ = 0;
   const AxisArray* programmedEnd_ = nullptr;  // set while emitting a compensated move
   bool threadMove_ = false;                   // set while emitting a threading move
+  bool warnedNoRadius_ = false;
   void deferEvent(std::function<void(EventSink&)> replay);
   bool crcBusy() const;
   double crcRadius() const;
