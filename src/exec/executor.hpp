@@ -290,6 +290,9 @@ class Executor {
     double reliefX = 0, reliefZ = 0;    // G73 first block
     int divisions = 1;
     double taper = 0;                   // G90/G92/G94 R, modal
+    int singleKind = 0;                 // the single cycle the modal X/Z/R belong to
+    bool haveEnd = false;
+    lathe::Pt lastEnd;                  // G90/G92/G94 X/Z, modal
     double peckRetract = 0;             // G74/G75 first block (parameter 5139)
     lathe::ThreadParams thread;         // G76 first block
   };

@@ -188,8 +188,22 @@ bool Executor::latheCycle(const Words& w, int kind) {
     case kFace:
     case kThread: {
       if (!w.any("XZUW")) return false;  // modal single cycle: only blocks with a position run
+      if (latheCyc_.singleKind != kind) {
+        // A new single cycle starts from fresh modal data.
+        latheCyc_.singleKind = kind;
+        latheCyc_.haveEnd = false;
+        latheCyc_.taper = 0;
+      }
       if (w.has('R')) latheCyc_.taper = latheLength(w, 'R', false);
+      // X, Z and R stay in force from block to block: "X45." alone repeats the cycle to the
+      // same Z at the new diameter.
       lathe::Pt end = latheTarget(w, here);
+      if (latheCyc_.haveEnd) {
+        if (!w.has('X') && !w.has('U')) end.x = latheCyc_.lastEnd.x;
+        if (!w.has('Z') && !w.has('W')) end.z = latheCyc_.lastEnd.z;
+      }
+      latheCyc_.lastEnd = end;
+      latheCyc_.haveEnd = true;
       std::vector<lathe::Move> moves;
       if (kind == kThread) {
         double chamfer = setup_.param("5130", 10) / 10.0 * modal_.feed;  // 0.1 lead units
