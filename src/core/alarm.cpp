@@ -96,6 +96,8 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::IllegalMacroSequence, "ILLEGAL MACRO SEQUENCE NUMBER",
        "GOTO to a sequence number that is not in the program or out of 1-99999."},
       {AlarmId::GAsArgument, "USE 'G' AS ARGUMENT", "G used as an argument of G65/G66."},
+      {AlarmId::IllegalSInRigidTap, "ILLEGAL S CODE COMMAND",
+       "Rigid tapping (M29 before G84/G74, lathe G84/G88) with no spindle speed S."},
       {AlarmId::OvertravelPlus, "+ OVERTRAVEL ( SOFT 1 )",
        "A move would pass an axis' upper stroke limit (axes.<X>.max); it is refused before it starts."},
       {AlarmId::OvertravelMinus, "- OVERTRAVEL ( SOFT 1 )",

@@ -66,6 +66,7 @@ enum class AlarmId : uint16_t {
   DuplicateNcMacro = 127,
   IllegalMacroSequence = 128,
   GAsArgument = 129,
+  IllegalSInRigidTap = 200,
   OvertravelPlus = 500,   // shown as OT0500
   OvertravelMinus = 501,  // shown as OT0501
   // ncvm limits and environment

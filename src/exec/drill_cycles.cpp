@@ -19,6 +19,7 @@ int drillingAxis(int plane) { return plane == 18 ? 1 : plane == 19 ? 0 : 2; }
 void Executor::cancelCycle() {
   modal_.g[9] = 800;
   cycle_ = DrillCycle{};
+  rigidTap_ = false;  // G80 and group 01 also end rigid tapping mode (M29)
 }
 
 // Called for every block in cycle mode. Returns true if the block drilled (it moved).
@@ -144,6 +145,7 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
       feed(bottom);
       dwellMs();
       break;
+    case 831:    // lathe G83/G87 with RTR = 1: peck, dwell P at the bottom
     case 830: {  // deep peck: back to R after each peck, rapid to d above the last depth
       int64_t d = std::llround(setup_.param("5115", 0.5) * 1e6);  // mm, machine units
       int64_t depth = rLevel;
@@ -156,8 +158,10 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
         if (depth == bottom) break;
         rapid(rLevel);
       }
+      if (code == 831) dwellMs();
       break;
     }
+    case 731:    // lathe G83/G87 with RTR = 0: high-speed peck, dwell P at the bottom
     case 730: {  // high-speed peck: back off d after each peck
       int64_t d = std::llround(setup_.param("5114", 0.5) * 1e6);  // mm, machine units
       int64_t depth = rLevel;
@@ -169,16 +173,34 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
         if (depth == bottom) break;
         rapid(depth - dir * d);
       }
+      if (code == 731) dwellMs();
       break;
     }
     case 840:  // tapping: reverse at the bottom, feed out, spindle forward again
-    case 740: {
-      bool right = code == 840;
+    case 740:
+    case 841:  // lathe G84/G88: reverses whatever the live tool's direction is
+    {
+      // Forward and reverse: G84 cw/ccw, G74 ccw/cw, lathe: the direction now and its opposite.
+      SpindleDir fwd = code == 840 ? SpindleDir::Cw : code == 740 ? SpindleDir::Ccw : spindleDir_;
+      SpindleDir rev = fwd == SpindleDir::Cw ? SpindleDir::Ccw : SpindleDir::Cw;
+      // Rigid tapping (M29, or 5200#0): the spindle follows the axis, so no M05 and the
+      // moves are synchronised like threading. Otherwise 5101#6 M5T = 0 sends M05 before
+      // each reversal.
+      const bool rigid = rigidTap_ || setup_.bit("5200#0");
+      if (rigid && rpm_ <= 0)
+        throw AlarmError(AlarmId::IllegalSInRigidTap, "rigid tapping without S");
+      const bool stopFirst = !rigid && !setup_.bit("5101#6");
+      threadMove_ = rigid;
       feed(bottom);
+      threadMove_ = false;
       dwellMs();
-      spindle(right ? SpindleDir::Ccw : SpindleDir::Cw);
+      if (stopFirst) spindle(SpindleDir::Stop);
+      spindle(rev);
+      threadMove_ = rigid;
       feed(rLevel);
-      spindle(right ? SpindleDir::Cw : SpindleDir::Ccw);
+      threadMove_ = false;
+      if (stopFirst) spindle(SpindleDir::Stop);
+      spindle(fwd);
       break;
     }
     case 850:  // boring: feed in, feed out

@@ -280,6 +280,9 @@ class Executor {
   void cancelCycle();
   bool drillCycle(const Words& w, bool cycleCommanded);
   void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis);
+  bool rigidTap_ = false;  // M29 given: the next G84/G74 (lathe G84/G88) is rigid tapping
+  // lathe_drill_cycles.cpp
+  bool latheDrillCycle(const Words& w, bool cycleCommanded);
 
   // lathe_cycle_exec.cpp
   enum LatheCycleKind {
@@ -295,6 +298,7 @@ class Executor {
     lathe::Pt lastEnd;                  // G90/G92/G94 X/Z, modal
     double peckRetract = 0;             // G74/G75 first block (parameter 5139)
     lathe::ThreadParams thread;         // G76 first block
+    bool paramsLoaded = false;          // the above start from parameters 5130-5143
   };
   LatheCycleState latheCyc_;
   int latheCycleKind(int code10) const;
@@ -305,6 +309,7 @@ class Executor {
   lathe::Contour readContour(int ns, int nf, std::vector<double>& feeds, uint32_t& lastBlock);
   void runLathePlan(const std::vector<lathe::Move>& moves, const std::vector<double>* contourFeeds, double lead);
   bool latheCycle(const Words& w, int kind);
+  void loadLatheCycleParams();
 
   // crc_exec.cpp: cutter compensation C
   struct DeferSink final : EventSink {

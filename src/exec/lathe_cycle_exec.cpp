@@ -173,8 +173,37 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
   modal_.plane = planeBefore;
 }
 
+// The first-block data of G71-G76 start as the control's parameters; a first block then
+// replaces them, as it rewrites the parameters on a real control. Lengths are in the
+// machine's unit (setup machine.units), radius values. An unset parameter keeps ncvm's
+// fallback (docs/setup-format.md, "Fanuc parameters ncvm reads").
+void Executor::loadLatheCycleParams() {
+  LatheCycleState& s = latheCyc_;
+  s.paramsLoaded = true;
+  // Machine unit -> current program unit.
+  double k = setup_.initialUnit == modal_.unit           ? 1.0
+             : setup_.initialUnit == InputUnit::Inch ? 25.4
+                                                     : 1.0 / 25.4;
+  auto len = [&](const char* key, double fallback) { return setup_.param(key, fallback / k) * k; };
+  auto count = [&](const char* key, int fallback) {
+    return static_cast<int>(std::llround(setup_.param(key, fallback)));
+  };
+  s.depth = len("5132", 1.0);
+  s.retract = len("5133", 0.5);
+  s.reliefX = len("5135", 0.0);
+  s.reliefZ = len("5136", 0.0);
+  s.divisions = count("5137", 1);
+  s.peckRetract = len("5139", 0.0);
+  s.thread.minCut = len("5140", 0.0);
+  s.thread.finishAllowance = len("5141", 0.0);
+  s.thread.finishPasses = count("5142", 1);
+  s.thread.angle = count("5143", 60);
+  s.thread.chamfer = count("5130", 10);
+}
+
 // Returns true when the block ran (or set up) a lathe cycle.
 bool Executor::latheCycle(const Words& w, int kind) {
+  if (!latheCyc_.paramsLoaded) loadLatheCycleParams();
   auto plan = [&](auto&& make) {
     try {
       return make();
@@ -206,7 +235,8 @@ bool Executor::latheCycle(const Words& w, int kind) {
       latheCyc_.haveEnd = true;
       std::vector<lathe::Move> moves;
       if (kind == kThread) {
-        double chamfer = setup_.param("5130", 10) / 10.0 * modal_.feed;  // 0.1 lead units
+        // Parameter 5130, also rewritten by the r of a G76 first block (0.1 lead units).
+        double chamfer = latheCyc_.thread.chamfer / 10.0 * modal_.feed;
         moves = plan([&] { return lathe::threadCycle(here, end, latheCyc_.taper, chamfer); });
         runLathePlan(moves, nullptr, modal_.feed);
       } else {
@@ -220,6 +250,8 @@ bool Executor::latheCycle(const Words& w, int kind) {
     case kPattern:
     case kFinish: {
       bool second = w.has('P') && w.has('Q');
+      // P without Q (or Q without P) names half a shape program.
+      if (w.has('P') != w.has('Q')) throw AlarmError(AlarmId::CycleAddressPQNotFound);
       if (!second) {
         // First block: depth and retract (G71 U R, G72 W R) or relief and divisions (G73).
         if (kind == kRoughTurn && w.has('U')) latheCyc_.depth = latheLength(w, 'U', false);

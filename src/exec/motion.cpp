@@ -363,7 +363,7 @@ void Executor::dwell(const Words& w) {
 }
 
 void Executor::referenceReturn(const Words& w, int which) {
-  if (modal_.g[9] != 800 && !lathe_) throw AlarmError(AlarmId::G27to30InCycle);
+  if (modal_.g[9] != 800) throw AlarmError(AlarmId::G27to30InCycle);
   if (which < 1 || which > 4) throw AlarmError(AlarmId::IllegalReferenceReturn, fmt::format("P{}", which));
   std::array<int64_t, kMaxAxes> mid{};
   uint32_t mask = 0;
@@ -388,7 +388,7 @@ void Executor::referenceReturn(const Words& w, int which) {
 }
 
 void Executor::returnFromReference(const Words& w) {
-  if (modal_.g[9] != 800 && !lathe_) throw AlarmError(AlarmId::G27to30InCycle);
+  if (modal_.g[9] != 800) throw AlarmError(AlarmId::G27to30InCycle);
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
   axisTargets(w, target, mask);

@@ -251,12 +251,12 @@ void Executor::execNc(const Block& b) {
     if (code == 670) continue;
     if (info.group == 0) oneShot = code;
     else applyModalG(code, info);
-    if (!lathe_ && info.group == 9) {
+    if (info.group == 9) {
       if (code == 800) cancelCycle();
       else cycleCommanded = true;
     }
-    // A group-01 code ends canned-cycle mode (mill).
-    if (!lathe_ && info.group == 1 && modal_.g[9] != 800) cancelCycle();
+    // A group-01 code ends canned-cycle mode (mill and lathe drilling cycles).
+    if (info.group == 1 && modal_.g[9] != 800) cancelCycle();
   }
   deriveModal();
   const bool crcMode = !lathe_ && (modal_.g[7] != 400 || crcBusy());
@@ -339,6 +339,12 @@ void Executor::execNc(const Block& b) {
   bool moved = false;
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
+  // Lathe drilling cycles (G83-G89, modal until G80 or group 01).
+  if (lathe_ && modal_.g[9] != 800 && oneShot < 0) {
+    moved = latheDrillCycle(w, cycleCommanded);
+    programControl(w, moved);
+    return;
+  }
   // Lathe multiple repetitive cycles (one-shot) and single cycles (modal group 01).
   if (lathe_) {
     int kind = oneShot >= 0 ? latheCycleKind(oneShot) : 0;
@@ -457,6 +463,11 @@ void Executor::auxFunctions(Words& w) {
       case 6:
         modal_.lastM = m;
         sink().onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, true});
+        break;
+      case 29:  // rigid tapping: the next G84/G74 (lathe G84/G88) follows the spindle
+        rigidTap_ = true;
+        modal_.lastM = m;
+        sink().onAux(AuxEvent{origin_, 'M', m});
         break;
       case 7:
       case 8:
