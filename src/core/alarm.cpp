@@ -42,8 +42,7 @@ const std::vector<AlarmInfo>& alarmTable() {
        "A compensated block would run against its programmed direction (a step or groove "
        "smaller than the cutter radius): the tool would overcut."},
       {AlarmId::ChamferInStartupCancel, "CHF/CNR NOT ALLOWED IN G41,G42",
-       "Chamfer or corner rounding (,C ,R) in the block that starts or cancels cutter compensation, "
-       "or in any block in compensation mode (ncvm does not compensate chamfered corners yet)."},
+       "Chamfer or corner rounding (,C ,R) in the block that starts or cancels cutter compensation."},
       {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC", "G27-G30 in canned-cycle mode."},
       {AlarmId::QNotFound, "ADDRESS Q NOT FOUND (G73/G83)", "G73 or G83 without a peck depth Q (or Q0)."},
       {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND", "G30 with P other than 2-4."},
