@@ -32,11 +32,17 @@ enum class AlarmId : uint16_t {
   NoIntersectionCrc = 33,
   NoCircInStartupCancel = 34,
   CannotG31InCompensation = 35,
+  CannotChangePlaneInCrc = 37,
   InterferenceInCircular = 38,
+  ChamferInStartupCancel = 39,
   InterferenceInCrc = 41,
   G27to30InCycle = 44,
   QNotFound = 45,
   IllegalReferenceReturn = 46,
+  // chamfer and corner rounding (,C ,R)
+  MissingMoveAfterChamfer = 51,
+  NotG01AfterChamfer = 52,
+  ChamferMoveTooShort = 55,
   // lathe multiple repetitive cycles (G70-G76)
   CycleAddressPQNotFound = 61,
   CycleIllegalCommand = 62,
@@ -66,6 +72,8 @@ enum class AlarmId : uint16_t {
   DuplicateNcMacro = 127,
   IllegalMacroSequence = 128,
   GAsArgument = 129,
+  IllegalScaleRate = 142,
+  IllegalPlaneForRotation = 144,
   IllegalSInRigidTap = 200,
   OvertravelPlus = 500,   // shown as OT0500
   OvertravelMinus = 501,  // shown as OT0501

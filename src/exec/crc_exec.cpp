@@ -109,6 +109,8 @@ void Executor::releasePending(bool all) {
     double unit = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
     for (size_t k = 0; k < cur.segs.size(); ++k) {
       const crc::OutSeg& o = cur.segs[k];
+      // A G39 corner arc is the G39 block's motion.
+      origin_ = (k == 0 && o.inserted && o.kind != crc::Kind::Line && info.cornerArc) ? info.cornerOrigin : info.origin;
       std::array<int64_t, kMaxAxes> target{};
       for (size_t a = 0; a < kMaxAxes; ++a) target[a] = machine_[a] - offset_[a];
       // The block's other axes arrive with its last piece.
@@ -146,6 +148,40 @@ void Executor::crcDrain() {
   releasePending(true);
 }
 
+// Mirror, scaling and rotation act before compensation: the compensator sees the
+// transformed path (a reflection swaps G41/G42 and G02/G03) and D is never scaled.
+// Returns the transformed end point.
+std::array<int64_t, kMaxAxes> Executor::crcTransform(crc::InSeg& s, const std::array<int64_t, kMaxAxes>& target) {
+  if (!xf_.active()) return target;
+  if (xf_.rotation && xf_.rotPlane != modal_.plane)
+    throw AlarmError(AlarmId::IllegalPlaneForRotation,
+                     fmt::format("cutter compensation in G{} under G68 in G{}", modal_.plane, xf_.rotPlane));
+  const PlaneIdx pi = planeIdx(modal_.plane);
+  const double unit = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
+  auto map = [&](const std::array<int64_t, kMaxAxes>& base, crc::P2& p) {
+    xform::P3 q{static_cast<double>(base[0]), static_cast<double>(base[1]), static_cast<double>(base[2])};
+    q[pi.u] = p.u * unit;
+    q[pi.v] = p.v * unit;
+    q = xf_.apply(q);
+    p = {q[pi.u] / unit, q[pi.v] / unit};
+  };
+  map(programmed_, s.start);
+  map(target, s.end);
+  if (s.kind != crc::Kind::Line) map(programmed_, s.center);
+  if (s.hasIJK) {
+    xform::P3 d{};
+    d[pi.u] = s.ijk.u;
+    d[pi.v] = s.ijk.v;
+    d = xf_.applyVector(d);
+    s.ijk = {d[pi.u], d[pi.v]};
+  }
+  if (xf_.flips(modal_.plane)) {
+    if (s.kind != crc::Kind::Line) s.kind = s.kind == crc::Kind::Cw ? crc::Kind::Ccw : crc::Kind::Cw;
+    if (s.side != crc::Side::Off) s.side = s.side == crc::Side::Left ? crc::Side::Right : crc::Side::Left;
+  }
+  return transformed(target);
+}
+
 // A block in compensation mode. Returns true when it had motion.
 bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc,
                         bool cw) {
@@ -177,28 +213,37 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
                                 : "G41/G42 with D0 or a zero D offset: no compensation");
       }
       s.tag = tag;
-      s.cornerArc = false;
+      s.cornerArc = g39Pending_;
       if (side == crc::Side::Off && w.any("IJK") && !arc) {
         s.hasIJK = true;
         s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0, w.has("IJK"[pi.v]) ? w.value("IJK"[pi.v]) : 0.0};
       }
+      const std::array<int64_t, kMaxAxes> actual = crcTransform(s, target);
       CrcBlock info;
       info.origin = origin_;
-      info.target = target;
+      info.cornerArc = g39Pending_;
+      info.cornerOrigin = g39Origin_;
+      g39Pending_ = false;
+      info.target = actual;
       info.feed = modal_.feed;
       info.plane = modal_.plane;
-      for (int k = 0; k < kMaxAxes; ++k) info.programmedEnd[static_cast<size_t>(k)] = toProgramUnits(target[static_cast<size_t>(k)], k, true);
+      for (int k = 0; k < kMaxAxes; ++k) info.programmedEnd[static_cast<size_t>(k)] = toProgramUnits(actual[static_cast<size_t>(k)], k, true);
       crcBlocks_[tag] = info;
       Pending p;
       p.tag = tag;
       pending_.push_back(std::move(p));
       programmed_ = target;
       crc_->push(s);
+      // The compensator places a block's whole path (with its extra corner moves) before it
+      // returns from the next push: every earlier block is complete now, even when the next
+      // block raises an alarm before any of its own path is out.
+      for (Pending& held : pending_)
+        if (held.tag >= 0 && held.tag < tag) held.closed = true;
     } else {
       if (mask) {
         // A move of the other axes only: it happens in its turn, from wherever the
         // compensated path has brought the tool.
-        std::array<int64_t, kMaxAxes> t = target;
+        std::array<int64_t, kMaxAxes> t = transformed(target);
         uint32_t m = mask;
         EventOrigin at = origin_;
         Pending p;

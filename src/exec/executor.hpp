@@ -24,6 +24,7 @@
 #include "machine/setup.hpp"
 #include "motion/cutter_comp.hpp"
 #include "motion/lathe_cycles.hpp"
+#include "motion/transform.hpp"
 #include "sim/probe_world.hpp"
 
 namespace ncvm {
@@ -338,6 +339,8 @@ class Executor {
     double feed = 0;
     int plane = 17;
     AxisArray programmedEnd{};
+    bool cornerArc = false;  // G39 before this block: its corner arc has the G39 block's line
+    EventOrigin cornerOrigin;
   };
   DeferSink deferSink_{this};
   bool deferring_ = false;
@@ -355,9 +358,53 @@ class Executor {
   void crcOutput(const crc::OutSeg& s);
   void releasePending(bool all);
   void crcDrain();
+  std::array<int64_t, kMaxAxes> crcTransform(crc::InSeg& s, const std::array<int64_t, kMaxAxes>& target);
   bool crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
   void arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std::array<int64_t, kMaxAxes>& targetWork,
                  const Words& w, bool cw, double& cu, double& cv);
+
+  bool g39Pending_ = false;   // G39 read: the next compensated block starts with a corner arc
+  EventOrigin g39Origin_;
+
+  // transforms.cpp: G51.1 mirror, G51 scaling, G68 rotation (mill)
+  xform::Transform xf_;
+  double xfAngleDeg_ = 0;  // G68 R as programmed (G91 R adds to it with 5400#0)
+  bool transformBlock(const Words& w, int oneShot);  // true: the block's axis words were its data
+  void transformRestrictions(int oneShot, bool workChanged) const;
+  std::array<int64_t, kMaxAxes> transformed(const std::array<int64_t, kMaxAxes>& p) const;
+  std::array<int64_t, kMaxAxes> programmedHere() const;  // where the program thinks the tool is
+  void untransformProgrammed();                            // programmed_ from the tool position
+  const std::array<int64_t, kMaxAxes>* moveBase() const;  // base of incremental words
+  // One programmed move (work coordinates before the transforms; arcs with their centre).
+  struct PlannedMove {
+    int mode = 10;  // 0 rapid, 10 line, 20 CW, 30 CCW (x10 like group 01)
+    std::array<int64_t, kMaxAxes> end{};
+    double cu = 0, cv = 0;  // arc centre in the plane (nm)
+    uint32_t mask = 0;
+  };
+  void runPlanned(const PlannedMove& m);
+
+  // corner_words.cpp: ,C and ,R
+  struct CornerHold {
+    PlannedMove move;
+    std::array<int64_t, kMaxAxes> start{};
+    bool chamfer = true;
+    int64_t amount = 0;  // nm
+    EventOrigin origin;
+    double feed = 0;
+    int plane = 17;
+    const Block* block = nullptr;  // alarms about the corner point at the ,C/,R block
+  };
+  std::optional<CornerHold> cornerHold_;
+  bool plannedBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
+  void cornerCheckBlock(const Words& w, int oneShot, bool crcMode) const;
+  struct ContourCorner {
+    size_t seg;  // the shape segment the ,C/,R block made
+    bool chamfer;
+    double amount;  // program units
+    const Block* block;
+  };
+  void applyContourCorners(lathe::Contour& c, std::vector<double>& feeds, const std::vector<ContourCorner>& corners);
 
   // print.cpp
   void print(const Block& b);

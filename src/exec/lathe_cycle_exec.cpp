@@ -88,6 +88,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
   double feed = modal_.feed;
   double u = unitNm(modal_.unit);
   const Block* saved = block_;
+  std::vector<ContourCorner> corners;  // ,C/,R of the shape blocks
   for (int32_t k = first; k <= last; ++k) {
     const Block& b = prog.blocks[static_cast<size_t>(k)];
     if (b.kind == BlockKind::Empty) continue;
@@ -127,11 +128,13 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
       s.kind = motion == 0 ? lathe::SegKind::Rapid : lathe::SegKind::Line;
     }
     (void)u;
+    if (w.hasCorner()) corners.push_back({c.segs.size(), w.hasCommaC, static_cast<double>(lengthNm(w.commaValue, w.commaPoint, 2)) / unitNm(modal_.unit), &b});
     c.segs.push_back(s);
     feeds.push_back(feed);
     at = s.end;
   }
   block_ = saved;
+  applyContourCorners(c, feeds, corners);
   lastBlock = static_cast<uint32_t>(last);
   return c;
 }

@@ -63,9 +63,13 @@ void Executor::gatherWords(const Block& b, Words& w) {
       continue;
     }
     if (L == 'c' || L == 'r') {
-      AlarmError e(AlarmId::ImproperGCode, "chamfer/corner rounding ,C ,R: compensation issue, not supported yet");
-      e.col = wd.col;
-      throw e;
+      // ,C and ,R: one of them per block (PS0053 on the control; the later one wins here).
+      w.hasCommaC = L == 'c';
+      w.hasCommaR = L == 'r';
+      w.commaValue = v;
+      w.commaPoint = point;
+      w.commaCol = wd.col;
+      continue;
     }
     if (L == 'G') {
       int code10 = static_cast<int>(std::llround(v * 10.0));
@@ -229,6 +233,7 @@ void Executor::execNc(const Block& b) {
   // G codes: modal ones change state (the last of a group wins), one-shot ones are noted.
   const int16_t workBefore = modal_.g[14], lengthBefore = modal_.g[8];
   const int32_t hBefore = modal_.hOffset;
+  const int planeBefore = modal_.plane;
   int oneShot = -1;
   bool cycleCommanded = false;
   for (int k = 0; k < w.ng; ++k) {
@@ -260,6 +265,10 @@ void Executor::execNc(const Block& b) {
   }
   deriveModal();
   const bool crcMode = !lathe_ && (modal_.g[7] != 400 || crcBusy());
+  if (!lathe_ && modal_.plane != planeBefore && crc_ && crc_->active())
+    throw AlarmError(AlarmId::CannotChangePlaneInCrc, fmt::format("G{} while G41/G42 vectors are in effect", modal_.plane));
+  cornerCheckBlock(w, oneShot, crcMode);
+  if (!lathe_) transformRestrictions(oneShot, modal_.g[14] != workBefore);
   if (crcMode) {
     deferring_ = true;
     // Blocks that stop buffering end the lookahead before they run.
@@ -336,6 +345,10 @@ void Executor::execNc(const Block& b) {
   auxFunctions(w);
   if (ended_) return;
 
+  if (!lathe_ && transformBlock(w, oneShot)) {
+    programControl(w, false);
+    return;
+  }
   bool moved = false;
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
@@ -370,7 +383,16 @@ void Executor::execNc(const Block& b) {
       break;
     case 530:
       machinePositioning(w);
+      if (xf_.active()) untransformProgrammed();
       moved = true;
+      break;
+    case 390:
+      // G39 corner arc: the next compensated block starts with an arc around its corner.
+      if (w.any("IJK")) throw AlarmError(AlarmId::ImproperGCode, "G39 with I/J/K is not supported by ncvm yet");
+      if (crc_ && crc_->active()) {
+        g39Pending_ = true;
+        g39Origin_ = origin_;
+      }
       break;
     case 100:
       programmableDataInput(w);
@@ -417,13 +439,15 @@ void Executor::execNc(const Block& b) {
         break;
       }
       bool arc = modal_.motion == 20 || modal_.motion == 30;
-      bool hasAxes = axisTargets(w, target, mask);
+      bool hasAxes = axisTargets(w, target, mask, moveBase());
       if (arc && (hasAxes || w.any("IJKR"))) {
-        arcTo(target, w, modal_.motion == 20);
-        moved = true;
+        moved = plannedBlock(w, target, mask, true, modal_.motion == 20);
       } else if (hasAxes) {
-        moveTo(target, modal_.motion == 0 ? MoveMode::Rapid : MoveMode::Linear, mask);
-        moved = true;
+        moved = plannedBlock(w, target, mask, false, false);
+      } else if (cornerHold_) {
+        throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the block after ,C/,R does not move");
+      } else if (w.hasCorner()) {
+        throw AlarmError(AlarmId::ChamferMoveTooShort, ",C/,R in a block without a move");
       }
       break;
     }

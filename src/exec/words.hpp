@@ -21,6 +21,11 @@ struct Words {
   int32_t nameIdx = -1;        // <name> word: index into Program::strings
   int32_t subCallProgram = -1; // M code subprogram call (parameters 6071-6079)
   bool tCall = false;          // T code calls O9000 (parameter 6001#5) after the block
+  // ,C (chamfer) and ,R (corner rounding), the 30i comma words.
+  bool hasCommaC = false, hasCommaR = false, commaPoint = false;
+  double commaValue = 0;
+  uint16_t commaCol = 0;
+  bool hasCorner() const { return hasCommaC || hasCommaR; }
   struct Arg {
     char letter;
     double value;
