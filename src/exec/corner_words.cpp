@@ -25,19 +25,28 @@ cornerw::Kind kindOf(int mode) {
 // Blocks that cannot follow a held ,C/,R block, found before the block does anything.
 void Executor::cornerCheckBlock(const Words& w, int oneShot, bool crcMode) const {
   if (crcMode && w.hasCorner()) {
-    // In the block that starts or cancels compensation the control refuses ,C/,R; inside
-    // offset mode it would compensate the chamfered path, which ncvm does not do yet.
+    // The control refuses ,C/,R in the block that starts or cancels compensation (in offset
+    // mode the chamfered path is compensated, see crcPush).
     bool startup = modal_.g[7] != 400 && !(crc_ && crc_->active());
     bool cancel = modal_.g[7] == 400;
-    AlarmError e =
-        (startup || cancel)
-            ? AlarmError(AlarmId::ChamferInStartupCancel,
-                         startup ? "in the start-up block" : "in the cancel block")
-            : AlarmError(
-                  AlarmId::ImproperGCode,
-                  "chamfer/corner R in cutter compensation mode is not supported by ncvm yet");
-    e.col = w.commaCol;
-    throw e;
+    if (startup || cancel) {
+      AlarmError e(AlarmId::ChamferInStartupCancel,
+                   startup ? "in the start-up block" : "in the cancel block");
+      e.col = w.commaCol;
+      throw e;
+    }
+  }
+  if (crcCorner_) {
+    bool stop = oneShot >= 0 || modal_.g[7] == 400 || modal_.plane != crcCorner_->plane;
+    for (int k = 0; k < w.nm; ++k) {
+      int m = w.m[static_cast<size_t>(k)];
+      stop |= m == 0 || m == 1 || m == 2 || m == 30 || m == 98 || m == 99;
+    }
+    if (stop)
+      throw AlarmError(AlarmId::MissingMoveAfterChamfer,
+                       "the block after ,C/,R must be a move in offset mode");
+    if (modal_.motion != 10 && modal_.motion != 20 && modal_.motion != 30)
+      throw AlarmError(AlarmId::NotG01AfterChamfer, "the block after ,C/,R is not G01, G02 or G03");
   }
   if (w.hasCorner() && modal_.motion != 10 && modal_.motion != 20 && modal_.motion != 30 &&
       !crcMode) {
@@ -74,8 +83,7 @@ bool Executor::plannedBlock(const Words& w, const std::array<int64_t, kMaxAxes>&
         throw AlarmError(AlarmId::MissingMoveAfterChamfer, "zero-length arc after ,C/,R");
       if (w.hasCorner())
         throw AlarmError(AlarmId::ChamferMoveTooShort, "zero-length arc with ,C/,R");
-      if (target == start) return false;
-      runPlanned(m);
+      if (target != start) runPlanned(m);
       return true;
     }
     arcCenter(start, target, w, cw, m.cu, m.cv);
@@ -159,6 +167,70 @@ bool Executor::plannedBlock(const Words& w, const std::array<int64_t, kMaxAxes>&
     return true;
   }
   runPlanned(m);
+  return true;
+}
+
+// A programmed block in offset mode goes to the compensator, unless it carries ,C/,R: then
+// it waits for the next block, and both are pushed cut short with the corner between them
+// (a block of its own for the compensator, with an odd tag, and the line of the ,C/,R block).
+bool Executor::crcPush(crc::InSeg s, const Words& w) {
+  if (crcCorner_) {
+    CrcCorner h = *crcCorner_;
+    crcCorner_.reset();
+    if (h.seg.side != s.side || h.seg.radius != s.radius)
+      throw AlarmError(AlarmId::ImproperGCode,
+                       "a side or D change after ,C/,R is not supported by ncvm yet");
+    cornerw::Corner c;
+    try {
+      c = cornerw::place({h.seg.kind, h.seg.start, h.seg.end, h.seg.center},
+                         {s.kind, s.start, s.end, s.center}, h.chamfer, h.amount);
+    } catch (const cornerw::CornerError& e) {
+      AlarmError ae(e.id, e.what());
+      ae.hasLoc = true;
+      ae.loc = h.block->loc;
+      ae.n = h.block->n;
+      throw ae;
+    }
+    crc::InSeg a = h.seg;
+    a.end = c.endA;
+    crc_->push(a);
+    if (!c.none) {
+      crc::InSeg k = h.seg;
+      k.kind = c.arc ? c.kind : crc::Kind::Line;
+      k.start = c.endA;
+      k.end = c.startB;
+      k.center = c.center;
+      k.cornerArc = false;
+      k.tag = h.seg.tag + 1;
+      crcBlocks_[k.tag] = crcBlocks_.at(h.seg.tag);
+      Pending p;
+      p.tag = k.tag;
+      // Before the current block's entry, which is the last one with its tag.
+      auto at = pending_.end();
+      for (auto it = pending_.begin(); it != pending_.end(); ++it)
+        if (it->tag == s.tag) at = it;
+      pending_.insert(at, std::move(p));
+      crc_->push(k);
+    }
+    s.start = c.startB;
+  }
+  if (w.hasCorner()) {
+    const double unit = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
+    const xform::PlaneAxes pa = xform::planeAxes(modal_.plane);
+    CrcCorner h;
+    h.seg = s;
+    h.chamfer = w.hasCommaC;
+    h.amount =
+        static_cast<double>(lengthNm(w.commaValue, w.commaPoint, static_cast<int>(pa.u))) / unit;
+    h.block = block_;
+    h.plane = modal_.plane;
+    if (h.amount <= 0)
+      throw AlarmError(AlarmId::ChamferMoveTooShort, "chamfer/corner R amount must be > 0");
+    if (s.rapid) throw AlarmError(AlarmId::NotG01AfterChamfer, ",C/,R in a G00 block");
+    crcCorner_ = h;
+    return false;
+  }
+  crc_->push(s);
   return true;
 }
 

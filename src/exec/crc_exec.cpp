@@ -188,7 +188,7 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
   ensureCompensator();
   const PlaneIdx pi = planeIdx(modal_.plane);
   double unit = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
-  int tag = ++crcTag_;
+  int tag = (crcTag_ += 2);  // odd tags: the ,C/,R corner after a block (crcPush)
   bool planeMove = (mask & ((1u << pi.u) | (1u << pi.v))) || (arc && w.any("IJKR"));
   crc::Side side = modal_.g[7] == 410 ? crc::Side::Left : modal_.g[7] == 420 ? crc::Side::Right : crc::Side::Off;
   try {
@@ -233,12 +233,12 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       p.tag = tag;
       pending_.push_back(std::move(p));
       programmed_ = target;
-      crc_->push(s);
       // The compensator places a block's whole path (with its extra corner moves) before it
       // returns from the next push: every earlier block is complete now, even when the next
       // block raises an alarm before any of its own path is out.
-      for (Pending& held : pending_)
-        if (held.tag >= 0 && held.tag < tag) held.closed = true;
+      if (crcPush(s, w))
+        for (Pending& held : pending_)
+          if (held.tag >= 0 && held.tag < tag) held.closed = true;
     } else {
       if (mask) {
         // A move of the other axes only: it happens in its turn, from wherever the
@@ -259,6 +259,7 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
         for (size_t a = 0; a < kMaxAxes; ++a)
           if (mask & (1u << a)) programmed_[a] = target[a];
       }
+      if (crcCorner_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the block after ,C/,R does not move in the plane");
       crc_->pushNonMoving(tag);
     }
   } catch (const crc::CrcError& e) {

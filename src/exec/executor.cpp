@@ -216,7 +216,7 @@ EndReason Executor::run(const Program& main) {
     enter(&main, FrameKind::Main, 1, false);
     while (step()) {
     }
-    if (cornerHold_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the program ends after a ,C/,R block");
+    if (cornerHold_ || crcCorner_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the program ends after a ,C/,R block");
     crcDrain();  // the end of the program releases whatever compensation still holds
   } catch (const AlarmError& e) {
     Alarm a;

@@ -396,6 +396,16 @@ class Executor {
     const Block* block = nullptr;  // alarms about the corner point at the ,C/,R block
   };
   std::optional<CornerHold> cornerHold_;
+  // ,C/,R in cutter compensation offset mode: the programmed block waits for the next one.
+  struct CrcCorner {
+    crc::InSeg seg;
+    bool chamfer = true;
+    double amount = 0;  // program units
+    const Block* block = nullptr;
+    int plane = 17;
+  };
+  std::optional<CrcCorner> crcCorner_;
+  bool crcPush(crc::InSeg s, const Words& w);  // false: held for its ,C/,R
   bool plannedBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
   void cornerCheckBlock(const Words& w, int oneShot, bool crcMode) const;
   struct ContourCorner {

@@ -30,7 +30,11 @@ std::array<int64_t, kMaxAxes> Executor::transformed(const std::array<int64_t, kM
   if (!xf_.active()) return p;
   xform::P3 t = xf_.apply(toP3(p));
   std::array<int64_t, kMaxAxes> out = p;
-  for (size_t k = 0; k < 3; ++k) out[k] = static_cast<int64_t>(std::llround(t[k]));
+  for (size_t k = 0; k < 3; ++k) {
+    // A scaled point far outside any machine must not overflow the nm counts.
+    if (!(std::fabs(t[k]) < 1e18)) throw AlarmError(AlarmId::FloatOverflow, "transformed position out of range");
+    out[k] = static_cast<int64_t>(std::llround(t[k]));
+  }
   return out;
 }
 
@@ -49,7 +53,8 @@ void Executor::untransformProgrammed() {
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
   if (!xf_.active()) return;
   xform::P3 p = xf_.invert(toP3(programmed_));
-  for (size_t k = 0; k < 3; ++k) programmed_[k] = static_cast<int64_t>(std::llround(p[k]));
+  for (size_t k = 0; k < 3; ++k)
+    if (std::fabs(p[k]) < 1e18) programmed_[k] = static_cast<int64_t>(std::llround(p[k]));
 }
 
 // Blocks a real control refuses (or leaves undefined: "do not specify") while a transform
@@ -119,7 +124,7 @@ bool Executor::transformBlock(const Words& w, int oneShot) {
     auto factor = [&](char c, double fallback, bool signedOk) {
       double f = fallback;
       if (w.has(c)) f = w.hasPoint(c) ? w.value(c) : w.value(c) * unit;
-      if (f == 0 || std::fabs(f) > maxFactor + 1e-12 || (!signedOk && f < 0))
+      if (std::fabs(f) < unit - 1e-12 || std::fabs(f) > maxFactor + 1e-12 || (!signedOk && f < 0))
         throw AlarmError(AlarmId::IllegalScaleRate, fmt::format("{} = {}", c, f));
       return f;
     };
