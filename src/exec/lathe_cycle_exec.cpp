@@ -158,6 +158,19 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
       modal_.feedPerRev = true;
     }
     threadMove_ = m.thread;
+    // Tool-nose radius compensation: the trace keeps the programmed point and the nose centre.
+    AxisArray prog{}, nose{};
+    if (m.compensated) {
+      for (int k = 0; k < kMaxAxes; ++k)
+        prog[static_cast<size_t>(k)] = toProgramUnits(target[static_cast<size_t>(k)], k, true);
+      nose = prog;
+      prog[0] = 2.0 * m.programmed.x;
+      prog[2] = m.programmed.z;
+      nose[0] = 2.0 * m.nose.x;
+      nose[2] = m.nose.z;
+      programmedEnd_ = &prog;
+      noseEnd_ = &nose;
+    }
     switch (m.kind) {
       case lathe::SegKind::Rapid: moveTo(target, MoveMode::Rapid, 0); break;
       case lathe::SegKind::Line: moveTo(target, MoveMode::Linear, 0); break;
@@ -167,6 +180,8 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
         break;
     }
     threadMove_ = false;
+    programmedEnd_ = nullptr;
+    noseEnd_ = nullptr;
     modal_.feedPerRev = perRevBefore;
   }
   modal_.feed = feedBefore;
@@ -211,6 +226,7 @@ bool Executor::latheCycle(const Words& w, int kind) {
         runLathePlan(moves, nullptr, modal_.feed);
       } else {
         moves = plan([&] { return lathe::singleCycle(here, end, latheCyc_.taper, kind == kFace); });
+        if (tnrcActive()) moves = tnrcSingleCycle(here, moves, kind == kFace);
         runLathePlan(moves, nullptr, 0);
       }
       return true;
@@ -240,8 +256,25 @@ bool Executor::latheCycle(const Words& w, int kind) {
       double allowX = w.has('U') ? latheLength(w, 'U', true) : 0.0;
       double allowZ = w.has('W') ? latheLength(w, 'W', false) : 0.0;
       std::vector<lathe::Move> moves;
+      // Under G41/G42 every one of these cycles works on the compensated shape.
+      const bool tnrc = tnrcActive();
+      if (tnrc) c = tnrcContour(c, feeds);
       if (kind == kFinish) {
         moves = plan([&] { return lathe::finishing(c); });
+        if (tnrc) {
+          crc::P2 tv = tnrcTipVector(tnrcRadius());
+          for (lathe::Move& m : moves) {
+            m.compensated = true;
+            if (m.contourIndex >= 0 &&
+                static_cast<size_t>(m.contourIndex) < tnrcProgrammed_.size()) {
+              m.programmed = tnrcProgrammed_[static_cast<size_t>(m.contourIndex)].first;
+              m.nose = tnrcProgrammed_[static_cast<size_t>(m.contourIndex)].second;
+            } else {
+              m.programmed = c.start;  // the return to the start point
+              m.nose = {m.end.x - tv.v, m.end.z - tv.u};
+            }
+          }
+        }
         runLathePlan(moves, &feeds, 0);
         return true;  // G70 continues with the next block
       }
