@@ -85,6 +85,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
   c.start = latheHere();
   lathe::Pt at = c.start;
   int motion = -1;
+  int comp = modal_.g[7];  // G40/G41/G42 may also be given inside the shape
   double feed = modal_.feed;
   double u = unitNm(modal_.unit);
   const Block* saved = block_;
@@ -98,6 +99,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     for (int g = 0; g < w.ng; ++g) {
       int code = w.g[static_cast<size_t>(g)];
       if (code == 0 || code == 10 || code == 20 || code == 30) motion = code;
+      else if (code == 400 || code == 410 || code == 420) comp = code;
       else if (code != 400 && code != 410 && code != 420 && code != 40)
         throw AlarmError(AlarmId::CycleUnavailableCommand, fmt::format("G{} between P and Q", code / 10));
     }
@@ -109,6 +111,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     if (!w.any("XZUWRIK")) continue;
     lathe::ContourSeg s;
     s.blockIndex = k;
+    s.comp = comp;
     s.end = latheTarget(w, at);
     if (motion == 20 || motion == 30) {
       s.kind = motion == 20 ? lathe::SegKind::ArcCw : lathe::SegKind::ArcCcw;
@@ -257,7 +260,9 @@ bool Executor::latheCycle(const Words& w, int kind) {
       double allowZ = w.has('W') ? latheLength(w, 'W', false) : 0.0;
       std::vector<lathe::Move> moves;
       // Under G41/G42 every one of these cycles works on the compensated shape.
-      const bool tnrc = tnrcActive();
+      bool tnrc = false;
+      for (const lathe::ContourSeg& s : c.segs) tnrc |= s.comp != 400;
+      tnrc = tnrc && lathe_ && tnrcRadius() != 0;
       if (tnrc) c = tnrcContour(c, feeds);
       if (kind == kFinish) {
         moves = plan([&] { return lathe::finishing(c); });

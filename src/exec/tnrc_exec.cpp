@@ -193,13 +193,13 @@ std::vector<lathe::Move> Executor::tnrcSingleCycle(const lathe::Pt& a,
 
 // G70-G73 under G41/G42: the finishing shape A -> ns .. nf -> A as the compensated path of
 // the imaginary tip: start-up on the ns block, the corners of offset mode, and the return
-// to A as the cancel. `feeds` (one per contour block) is rebuilt for the new pieces.
+// to A as the cancel. Each block uses the G40/G41/G42 in effect for it: the cycle block's,
+// or one given inside the shape. `feeds` (one per contour block) is rebuilt for the pieces.
 lathe::Contour Executor::tnrcContour(const lathe::Contour& c, std::vector<double>& feeds) {
   crc::Options o;
   o.startupTypeB = setup_.bit("5003#0");
   std::vector<crc::OutSeg> got;
   crc::Compensator comp(o, [&](const crc::OutSeg& s) { got.push_back(s); });
-  crc::Side side = modal_.g[7] == 410 ? crc::Side::Left : crc::Side::Right;
   double r = tnrcRadius();
   crc::P2 at = toPlane(c.start);
   const int n = static_cast<int>(c.segs.size());
@@ -214,7 +214,7 @@ lathe::Contour Executor::tnrcContour(const lathe::Contour& c, std::vector<double
       in.end = toPlane(s.end);
       in.center = toPlane(s.center);
       in.rapid = s.kind == lathe::SegKind::Rapid;
-      in.side = side;
+      in.side = s.comp == 410 ? crc::Side::Left : s.comp == 420 ? crc::Side::Right : crc::Side::Off;
       in.radius = r;
       in.tag = i;
       comp.push(in);
