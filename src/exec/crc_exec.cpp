@@ -195,11 +195,11 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
         s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0, w.has("IJK"[pi.v]) ? w.value("IJK"[pi.v]) : 0.0};
       }
       CrcBlock info;
+      info.tip = lathe_ ? tnrcTipVector(s.radius) : crc::P2{};
       info.origin = origin_;
       info.target = target;
       info.feed = modal_.feed;
       info.plane = modal_.plane;
-      info.tip = lathe_ ? tnrcTipVector(s.radius) : crc::P2{};
       for (int k = 0; k < kMaxAxes; ++k) info.programmedEnd[static_cast<size_t>(k)] = toProgramUnits(target[static_cast<size_t>(k)], k, true);
       crcBlocks_[tag] = info;
       Pending p;

@@ -328,12 +328,12 @@ class Executor {
     std::function<void()> action;   // tag < 0: anything else the block did
   };
   struct CrcBlock {
+    crc::P2 tip;  // lathe: imaginary tip minus nose centre (plane units) while compensated
     EventOrigin origin;
     std::array<int64_t, kMaxAxes> target{};
     double feed = 0;
     int plane = 17;
     AxisArray programmedEnd{};
-    crc::P2 tip;  // lathe: imaginary tip minus nose centre (plane units) while compensated
   };
   DeferSink deferSink_{this};
   bool deferring_ = false;
@@ -352,6 +352,12 @@ class Executor {
   void releasePending(bool all);
   void crcDrain();
   bool crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
+  void arcCenter(const std::array<int64_t, kMaxAxes>& startW,
+                 const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw,
+                 double& cu, double& cv);
+
+  // print.cpp
+  void print(const Block& b);
 
   // tnrc_exec.cpp: lathe tool-nose radius compensation (the compensator above places the
   // nose centre; these add the imaginary tip and handle the lathe cycles)
@@ -367,11 +373,6 @@ class Executor {
   std::vector<lathe::Move> tnrcSingleCycle(const lathe::Pt& start,
                                            const std::vector<lathe::Move>& moves, bool face);
   lathe::Contour tnrcContour(const lathe::Contour& c, std::vector<double>& feeds);
-  void arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std::array<int64_t, kMaxAxes>& targetWork,
-                 const Words& w, bool cw, double& cu, double& cv);
-
-  // print.cpp
-  void print(const Block& b);
 };
 
 }  // namespace ncvm

@@ -260,8 +260,8 @@ bool Executor::latheCycle(const Words& w, int kind) {
       double allowZ = w.has('W') ? latheLength(w, 'W', false) : 0.0;
       std::vector<lathe::Move> moves;
       // Under G41/G42 every one of these cycles works on the compensated shape.
-      bool tnrc = false;
-      for (const lathe::ContourSeg& s : c.segs) tnrc |= s.comp != 400;
+      bool tnrc = modal_.g[7] != 400;
+      for (const lathe::ContourSeg& s : c.segs) tnrc |= s.comp >= 0 && s.comp != 400;
       tnrc = tnrc && lathe_ && tnrcRadius() != 0;
       if (tnrc) c = tnrcContour(c, feeds);
       if (kind == kFinish) {

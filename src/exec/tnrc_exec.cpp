@@ -202,6 +202,7 @@ lathe::Contour Executor::tnrcContour(const lathe::Contour& c, std::vector<double
   crc::Compensator comp(o, [&](const crc::OutSeg& s) { got.push_back(s); });
   double r = tnrcRadius();
   crc::P2 at = toPlane(c.start);
+  int mode = modal_.g[7];
   const int n = static_cast<int>(c.segs.size());
   try {
     for (int i = 0; i < n; ++i) {
@@ -214,7 +215,8 @@ lathe::Contour Executor::tnrcContour(const lathe::Contour& c, std::vector<double
       in.end = toPlane(s.end);
       in.center = toPlane(s.center);
       in.rapid = s.kind == lathe::SegKind::Rapid;
-      in.side = s.comp == 410 ? crc::Side::Left : s.comp == 420 ? crc::Side::Right : crc::Side::Off;
+      if (s.comp >= 0) mode = s.comp;  // pieces added to the shape (,C/,R) keep the mode
+      in.side = mode == 410 ? crc::Side::Left : mode == 420 ? crc::Side::Right : crc::Side::Off;
       in.radius = r;
       in.tag = i;
       comp.push(in);

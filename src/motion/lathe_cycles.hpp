@@ -29,7 +29,7 @@ struct ContourSeg {
   Pt end;
   Pt center;         // arcs only
   int blockIndex = -1;  // program block that produced it (for the trace)
-  int comp = 400;       // G40/G41/G42 (x10) in effect for the block: the cycle block's, or its own
+  int comp = -1;        // G40/G41/G42 (x10) in effect for the block; -1: as the block before
 };
 
 struct Contour {
