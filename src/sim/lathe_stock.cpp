@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -24,6 +25,27 @@ ClipperLib::Path toPath(const std::vector<Pt>& pts) {
   p.reserve(pts.size());
   for (const Pt& q : pts) p.push_back({toInt(q.z), toInt(q.r)});  // X = z, Y = r
   return p;
+}
+
+// Lowest r of a convex polygon over the z range [a, b] (its lower envelope there): a tile
+// whose material stays below it cannot be touched, the common case behind the nose.
+double lowestOver(const ClipperLib::Path& poly, cInt a, cInt b) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < poly.size(); ++k) {
+    const auto& p = poly[k];
+    const auto& q = poly[(k + 1) % poly.size()];
+    cInt lo = std::max(a, std::min(p.X, q.X)), hi = std::min(b, std::max(p.X, q.X));
+    if (lo > hi) continue;
+    if (p.X == q.X) {
+      best = std::min(best, static_cast<double>(std::min(p.Y, q.Y)));
+      continue;
+    }
+    auto at = [&](cInt z) {
+      return static_cast<double>(p.Y) + static_cast<double>(z - p.X) / static_cast<double>(q.X - p.X) * static_cast<double>(q.Y - p.Y);
+    };
+    best = std::min({best, at(lo), at(hi)});
+  }
+  return best;
 }
 
 double pathsArea(const ClipperLib::Paths& ps) {
@@ -55,7 +77,7 @@ LatheStock::LatheStock(const Setup& setup) : setup_(setup) {
   zFront_ = st.frontZ;
   zBack_ = st.frontZ - st.length;
   // Tiles about 1 mm wide (at most 4096 of them): a short move touches one or two.
-  double w = std::max(unit_, st.length / 4096);
+  double w = std::max(unit_ * 0.5, st.length / 4096);
   size_t n = static_cast<size_t>(std::ceil(st.length / w));
   tileW_ = toInt(w);
   tileZ0_ = toInt(zBack_);
@@ -66,6 +88,7 @@ LatheStock::LatheStock(const Setup& setup) : setup_(setup) {
     tiles_[k].paths = {
         {{z0, toInt(rIn_)}, {z1, toInt(rIn_)}, {z1, toInt(rOut_)}, {z0, toInt(rOut_)}}};
     refreshBounds(tiles_[k]);
+    tiles_[k].area = pathsArea(tiles_[k].paths);
   }
   selectTool(ToolSpec{"insert"});
   if (setup.target.present) {
@@ -128,13 +151,15 @@ void LatheStock::onTool(const ToolEvent& e) {
                     {"source", source}});
 }
 
-double LatheStock::area() const {
+double LatheStock::area() {
+  flush();
   double a = 0;
   for (const auto& t : tiles_) a += pathsArea(t.paths);
   return a;
 }
 
-ClipperLib::Paths LatheStock::profile() const {
+ClipperLib::Paths LatheStock::profile() {
+  flush();
   ClipperLib::Clipper c;
   for (const auto& t : tiles_) c.AddPaths(t.paths, ClipperLib::ptSubject, true);
   ClipperLib::Paths out;
@@ -142,54 +167,106 @@ ClipperLib::Paths LatheStock::profile() const {
   return out;
 }
 
-// Removes poly from the tiles it overlaps; returns the area removed.
-double LatheStock::cutPolygon(const ClipperLib::Path& poly, cInt zlo, cInt zhi) {
-  cInt rlo = poly.front().Y, rhi = rlo;
-  for (const auto& q : poly) rlo = std::min(rlo, q.Y), rhi = std::max(rhi, q.Y);
-  if (tiles_.empty() || zhi < tileZ0_) return 0;
+LatheStock::Clip LatheStock::makeClip(ClipperLib::Path poly) {
+  Clip c{std::move(poly), 0, 0, 0, 0};
+  c.zlo = c.zhi = c.poly.front().X;
+  c.rlo = c.rhi = c.poly.front().Y;
+  for (const auto& q : c.poly) {
+    c.zlo = std::min(c.zlo, q.X), c.zhi = std::max(c.zhi, q.X);
+    c.rlo = std::min(c.rlo, q.Y), c.rhi = std::max(c.rhi, q.Y);
+  }
+  return c;
+}
+
+// Can the clip polygon touch the tile's material? Bounds first, then the clip's lower
+// envelope against the highest material of the tile.
+bool LatheStock::reaches(const Tile& t, const Clip& c) const {
+  if (t.empty || t.zmax <= c.zlo || t.zmin >= c.zhi || t.rmax <= c.rlo || t.rmin >= c.rhi) return false;
+  return static_cast<double>(t.rmax) > lowestOver(c.poly, t.zmin, t.zmax);
+}
+
+bool LatheStock::queueClip(Clip c) {
+  bool reached = false;
+  if (!tiles_.empty() && c.zhi >= tileZ0_) {
+    long first = std::max<long>(0, static_cast<long>((c.zlo - tileZ0_) / tileW_));
+    long last = std::min<long>(static_cast<long>(tiles_.size()) - 1, static_cast<long>((c.zhi - tileZ0_) / tileW_));
+    for (long k = first; k <= last && !reached; ++k) reached = reaches(tiles_[static_cast<size_t>(k)], c);
+  }
+  // A clip that cannot reach the material now cannot after the queue either: the queue
+  // only removes material.
+  if (reached) queue_.push_back(std::move(c));
+  return reached;
+}
+
+double LatheStock::flush() {
+  if (queue_.empty()) return 0;
+  cInt zlo = queue_.front().zlo, zhi = queue_.front().zhi;
+  for (const auto& c : queue_) zlo = std::min(zlo, c.zlo), zhi = std::max(zhi, c.zhi);
   long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
-  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
-                             static_cast<long>((zhi - tileZ0_) / tileW_));
+  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1, static_cast<long>((zhi - tileZ0_) / tileW_));
   double removed = 0;
   for (long k = first; k <= last; ++k) {
     Tile& t = tiles_[static_cast<size_t>(k)];
-    if (t.empty || t.zmax <= zlo || t.zmin >= zhi || t.rmax <= rlo || t.rmin >= rhi) continue;
-    double before = pathsArea(t.paths);
-    clipper_.Clear();
-    clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
-    clipper_.AddPath(poly, ClipperLib::ptClip, true);
+    bool any = false;
+    for (const auto& c : queue_) {
+      if (!reaches(t, c)) continue;
+      if (!any) {
+        clipper_.Clear();
+        clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
+        any = true;
+      }
+      clipper_.AddPath(c.poly, ClipperLib::ptClip, true);
+    }
+    if (!any) continue;
     ClipperLib::Paths out;
     clipper_.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     double after = pathsArea(out);
-    if (before - after <= 0) continue;  // touched the bounds only
+    if (t.area - after <= 0) continue;  // touched the bounds only
+    removed += t.area - after;
     t.paths = std::move(out);
+    t.area = after;
     refreshBounds(t);
-    removed += before - after;
   }
+  queue_.clear();
+  removed_ += removed;
   return removed;
+}
+
+bool LatheStock::queueLine(Pt a, Pt b) {
+  ClipperLib::Path poly = toPath(lsim::sweptHull(outline_, a, b));
+  // Past the spindle axis the tool cuts the other side of the part: the mirror image.
+  bool below = std::any_of(poly.begin(), poly.end(), [](const ClipperLib::IntPoint& q) { return q.Y < 0; });
+  ClipperLib::Path mirror;
+  if (below) {
+    mirror = poly;
+    for (auto& q : mirror) q.Y = -q.Y;
+    std::reverse(mirror.begin(), mirror.end());
+  }
+  bool reached = queueClip(makeClip(std::move(poly)));
+  if (below) reached |= queueClip(makeClip(std::move(mirror)));
+  return reached;
 }
 
 double LatheStock::cutLine(Pt a, Pt b) {
-  std::vector<Pt> hull = lsim::sweptHull(outline_, a, b);
-  ClipperLib::Path poly = toPath(hull);
-  cInt zlo = poly.front().X, zhi = zlo;
-  for (const auto& q : poly) zlo = std::min(zlo, q.X), zhi = std::max(zhi, q.X);
-  double removed = cutPolygon(poly, zlo, zhi);
-  // Past the spindle axis the tool cuts the other side of the part: the mirror image.
-  bool below =
-      std::any_of(poly.begin(), poly.end(), [](const ClipperLib::IntPoint& q) { return q.Y < 0; });
-  if (below) {
-    for (auto& q : poly) q.Y = -q.Y;
-    std::reverse(poly.begin(), poly.end());
-    removed += cutPolygon(poly, zlo, zhi);
-  }
-  return removed;
+  flush();
+  queueLine(a, b);
+  return flush();
 }
 
 void LatheStock::cutPath(const std::vector<Pt>& pts, const MoveEvent& e) {
+  if (e.mode != MoveMode::Rapid) {
+    bool reached = false;
+    for (size_t k = 1; k < pts.size(); ++k) {
+      reached |= queueLine(pts[k - 1], pts[k]);
+      if (queue_.size() >= kBatch) flush();
+    }
+    if (reached) ++cuttingMoves_;
+    return;
+  }
+  // A rapid is measured on its own, against the stock as the feed moves left it.
+  flush();
   double removed = 0;
   for (size_t k = 1; k < pts.size(); ++k) removed += cutLine(pts[k - 1], pts[k]);
-  removed_ += removed;
   if (removed > 0) ++cuttingMoves_;
   // A rapid that removes material is a crash. Rounding of the polygon can graze the
   // profile the previous feed move left: far below any real contact, so it does not count.
