@@ -43,6 +43,9 @@ struct MoveEvent {
   // Cutter compensation: end is the tool centre; programmedEnd is the programmed point.
   bool compensated = false;
   AxisArray programmedEnd{};
+  // Lathe tool-nose radius compensation: end is the imaginary tip, noseEnd the nose centre.
+  bool nose = false;
+  AxisArray noseEnd{};
 };
 
 struct DwellEvent {

@@ -62,6 +62,7 @@ void Executor::deferEvent(std::function<void(EventSink&)> replay) {
 bool Executor::crcBusy() const { return !pending_.empty() || (crc_ && crc_->active()); }
 
 double Executor::crcRadius() const {
+  if (lathe_) return tnrcRadius();
   int d = modal_.dOffset;
   if (d <= 0 || d >= kToolRows) return 0.0;
   const ToolOffsetRow& r = mem_.tools[static_cast<size_t>(d)];
@@ -113,17 +114,26 @@ void Executor::releasePending(bool all) {
       for (size_t a = 0; a < kMaxAxes; ++a) target[a] = machine_[a] - offset_[a];
       // The block's other axes arrive with its last piece.
       if (!o.inserted && k + 1 == cur.segs.size()) target = info.target;
-      target[pi.u] = static_cast<int64_t>(std::llround(o.end.u * unit));
-      target[pi.v] = static_cast<int64_t>(std::llround(o.end.v * unit));
+      // Lathe: the compensator places the nose centre; the tool moves its imaginary tip.
+      const crc::P2 tip = o.vectorAtEnd ? info.tip : crc::P2{};
+      target[pi.u] = static_cast<int64_t>(std::llround((o.end.u + tip.u) * unit));
+      target[pi.v] = static_cast<int64_t>(std::llround((o.end.v + tip.v) * unit));
       programmedEnd_ = &info.programmedEnd;
+      AxisArray nose{};
+      if (lathe_) {
+        nose = tnrcNoseEnd(target, info.tip);
+        noseEnd_ = &nose;
+      }
       if (o.kind == crc::Kind::Line) {
         bool same = true;
         for (size_t a = 0; a < kMaxAxes; ++a) same &= target[a] == machine_[a] - offset_[a];
         if (!same) moveTo(target, o.rapid ? MoveMode::Rapid : MoveMode::Linear, 0);
       } else {
-        arcWithCenter(target, o.center.u * unit, o.center.v * unit, o.kind == crc::Kind::Cw);
+        arcWithCenter(target, (o.center.u + tip.u) * unit, (o.center.v + tip.v) * unit,
+                      o.kind == crc::Kind::Cw);
       }
       programmedEnd_ = nullptr;
+      noseEnd_ = nullptr;
     }
     origin_ = savedOrigin;
     modal_.feed = savedFeed;
@@ -173,8 +183,10 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
         // Old 0-M programs name the radius with H in the G41/G42 block; with D0 the path is
         // not compensated at all, which must not pass silently.
         warnedNoRadius_ = true;
-        warn("W005", w.has('H') ? "G41/G42 with D0 (H in the block is a length offset, not the radius): no compensation"
-                                : "G41/G42 with D0 or a zero D offset: no compensation");
+        warn("W005", lathe_ ? "G41/G42 with a zero nose radius (R of the T offset): no compensation"
+                     : w.has('H') ? "G41/G42 with D0 (H in the block is a length offset, not the "
+                                    "radius): no compensation"
+                                  : "G41/G42 with D0 or a zero D offset: no compensation");
       }
       s.tag = tag;
       s.cornerArc = false;
@@ -183,6 +195,7 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
         s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0, w.has("IJK"[pi.v]) ? w.value("IJK"[pi.v]) : 0.0};
       }
       CrcBlock info;
+      info.tip = lathe_ ? tnrcTipVector(s.radius) : crc::P2{};
       info.origin = origin_;
       info.target = target;
       info.feed = modal_.feed;

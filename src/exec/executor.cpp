@@ -280,7 +280,7 @@ bool Executor::step() {
   origin_.line = b.loc.line;
   origin_.n = b.n;
   origin_.programName = &prog.label;
-  deferring_ = !lathe_ && crcBusy();
+  deferring_ = crcBusy();
   switch (b.kind) {
     case BlockKind::Empty:
       ++f.pc;

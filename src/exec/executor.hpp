@@ -328,6 +328,7 @@ class Executor {
     std::function<void()> action;   // tag < 0: anything else the block did
   };
   struct CrcBlock {
+    crc::P2 tip;  // lathe: imaginary tip minus nose centre (plane units) while compensated
     EventOrigin origin;
     std::array<int64_t, kMaxAxes> target{};
     double feed = 0;
@@ -351,11 +352,27 @@ class Executor {
   void releasePending(bool all);
   void crcDrain();
   bool crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
-  void arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std::array<int64_t, kMaxAxes>& targetWork,
-                 const Words& w, bool cw, double& cu, double& cv);
+  void arcCenter(const std::array<int64_t, kMaxAxes>& startW,
+                 const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw,
+                 double& cu, double& cv);
 
   // print.cpp
   void print(const Block& b);
+
+  // tnrc_exec.cpp: lathe tool-nose radius compensation (the compensator above places the
+  // nose centre; these add the imaginary tip and handle the lathe cycles)
+  const AxisArray* noseEnd_ = nullptr;  // set while emitting a move under G41/G42 (lathe)
+  // G70 under G41/G42: per compensated contour piece, the programmed end and the nose centre.
+  std::vector<std::pair<lathe::Pt, lathe::Pt>> tnrcProgrammed_;
+  int tnrcOffsetRow() const;
+  double tnrcRadius() const;
+  crc::P2 tnrcTipVector(double radius) const;
+  AxisArray tnrcNoseEnd(const std::array<int64_t, kMaxAxes>& tipWork, const crc::P2& tip) const;
+  void tnrcBeforeCycle(int kind, const Words& w);
+  bool tnrcActive() const;
+  std::vector<lathe::Move> tnrcSingleCycle(const lathe::Pt& start,
+                                           const std::vector<lathe::Move>& moves, bool face);
+  lathe::Contour tnrcContour(const lathe::Contour& c, std::vector<double>& feeds);
 };
 
 }  // namespace ncvm

@@ -85,6 +85,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
   c.start = latheHere();
   lathe::Pt at = c.start;
   int motion = -1;
+  int comp = modal_.g[7];  // G40/G41/G42 may also be given inside the shape
   double feed = modal_.feed;
   double u = unitNm(modal_.unit);
   const Block* saved = block_;
@@ -98,6 +99,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     for (int g = 0; g < w.ng; ++g) {
       int code = w.g[static_cast<size_t>(g)];
       if (code == 0 || code == 10 || code == 20 || code == 30) motion = code;
+      else if (code == 400 || code == 410 || code == 420) comp = code;
       else if (code != 400 && code != 410 && code != 420 && code != 40)
         throw AlarmError(AlarmId::CycleUnavailableCommand, fmt::format("G{} between P and Q", code / 10));
     }
@@ -109,6 +111,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     if (!w.any("XZUWRIK")) continue;
     lathe::ContourSeg s;
     s.blockIndex = k;
+    s.comp = comp;
     s.end = latheTarget(w, at);
     if (motion == 20 || motion == 30) {
       s.kind = motion == 20 ? lathe::SegKind::ArcCw : lathe::SegKind::ArcCcw;
@@ -158,6 +161,19 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
       modal_.feedPerRev = true;
     }
     threadMove_ = m.thread;
+    // Tool-nose radius compensation: the trace keeps the programmed point and the nose centre.
+    AxisArray prog{}, nose{};
+    if (m.compensated) {
+      for (int k = 0; k < kMaxAxes; ++k)
+        prog[static_cast<size_t>(k)] = toProgramUnits(target[static_cast<size_t>(k)], k, true);
+      nose = prog;
+      prog[0] = 2.0 * m.programmed.x;
+      prog[2] = m.programmed.z;
+      nose[0] = 2.0 * m.nose.x;
+      nose[2] = m.nose.z;
+      programmedEnd_ = &prog;
+      noseEnd_ = &nose;
+    }
     switch (m.kind) {
       case lathe::SegKind::Rapid: moveTo(target, MoveMode::Rapid, 0); break;
       case lathe::SegKind::Line: moveTo(target, MoveMode::Linear, 0); break;
@@ -167,6 +183,8 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
         break;
     }
     threadMove_ = false;
+    programmedEnd_ = nullptr;
+    noseEnd_ = nullptr;
     modal_.feedPerRev = perRevBefore;
   }
   modal_.feed = feedBefore;
@@ -211,6 +229,7 @@ bool Executor::latheCycle(const Words& w, int kind) {
         runLathePlan(moves, nullptr, modal_.feed);
       } else {
         moves = plan([&] { return lathe::singleCycle(here, end, latheCyc_.taper, kind == kFace); });
+        if (tnrcActive()) moves = tnrcSingleCycle(here, moves, kind == kFace);
         runLathePlan(moves, nullptr, 0);
       }
       return true;
@@ -240,8 +259,27 @@ bool Executor::latheCycle(const Words& w, int kind) {
       double allowX = w.has('U') ? latheLength(w, 'U', true) : 0.0;
       double allowZ = w.has('W') ? latheLength(w, 'W', false) : 0.0;
       std::vector<lathe::Move> moves;
+      // Under G41/G42 every one of these cycles works on the compensated shape.
+      bool tnrc = modal_.g[7] != 400;
+      for (const lathe::ContourSeg& s : c.segs) tnrc |= s.comp >= 0 && s.comp != 400;
+      tnrc = tnrc && lathe_ && tnrcRadius() != 0;
+      if (tnrc) c = tnrcContour(c, feeds);
       if (kind == kFinish) {
         moves = plan([&] { return lathe::finishing(c); });
+        if (tnrc) {
+          crc::P2 tv = tnrcTipVector(tnrcRadius());
+          for (lathe::Move& m : moves) {
+            m.compensated = true;
+            if (m.contourIndex >= 0 &&
+                static_cast<size_t>(m.contourIndex) < tnrcProgrammed_.size()) {
+              m.programmed = tnrcProgrammed_[static_cast<size_t>(m.contourIndex)].first;
+              m.nose = tnrcProgrammed_[static_cast<size_t>(m.contourIndex)].second;
+            } else {
+              m.programmed = c.start;  // the return to the start point
+              m.nose = {m.end.x - tv.v, m.end.z - tv.u};
+            }
+          }
+        }
         runLathePlan(moves, &feeds, 0);
         return true;  // G70 continues with the next block
       }

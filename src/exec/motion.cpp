@@ -117,6 +117,10 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
     e.compensated = true;
     e.programmedEnd = *programmedEnd_;
   }
+  if (noseEnd_) {
+    e.nose = true;
+    e.noseEnd = *noseEnd_;
+  }
   for (int k = 0; k < kMaxAxes; ++k) {
     auto s = static_cast<size_t>(k);
     e.mstart[s] = toProgramUnits(fromMachine[s], k, true);

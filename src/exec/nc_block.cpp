@@ -259,7 +259,7 @@ void Executor::execNc(const Block& b) {
     if (!lathe_ && info.group == 1 && modal_.g[9] != 800) cancelCycle();
   }
   deriveModal();
-  const bool crcMode = !lathe_ && (modal_.g[7] != 400 || crcBusy());
+  const bool crcMode = modal_.g[7] != 400 || crcBusy();
   if (crcMode) {
     deferring_ = true;
     // Blocks that stop buffering end the lookahead before they run.
@@ -344,6 +344,7 @@ void Executor::execNc(const Block& b) {
     int kind = oneShot >= 0 ? latheCycleKind(oneShot) : 0;
     int modalKind = latheCycleKind(modal_.motion);
     if (kind || modalKind) {
+      tnrcBeforeCycle(kind ? kind : modalKind, w);  // the held blocks end before the cycle
       moved = latheCycle(w, kind ? kind : modalKind);
       programControl(w, moved);
       return;
@@ -384,7 +385,9 @@ void Executor::execNc(const Block& b) {
       moved = true;
       break;
     default: {
-      if (!lathe_ && (modal_.g[7] != 400 || crcBusy())) {
+      const bool latheThread = lathe_ && (modal_.motion == 320 || modal_.motion == 330);
+      if (latheThread) tnrcBeforeCycle(0, w);  // threading moves are not nose-compensated
+      if (!latheThread && (modal_.g[7] != 400 || crcBusy())) {
         bool arc = modal_.motion == 20 || modal_.motion == 30;
         axisTargets(w, target, mask, &programmed_);
         moved = crcBlock(w, target, mask, arc, modal_.motion == 20);

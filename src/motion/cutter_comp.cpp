@@ -39,7 +39,7 @@ bool zeroLine(const InSeg& s, double eps) {
 }
 
 OutSeg copyOf(const InSeg& s) {
-  return {s.kind, s.start, s.end, s.center, s.rapid, s.tag, false};
+  return {s.kind, s.start, s.end, s.center, s.rapid, s.tag, false, false};
 }
 
 }  // namespace
@@ -144,7 +144,7 @@ struct Compensator::Impl {
     if (c.kind != Kind::Line)
       throw CrcError(AlarmId::NoCircInStartupCancel, "cancel block must be G00 or G01", c.tag);
     if (held) emitCorner(*held, cancelCorner(*held, c));
-    out({Kind::Line, tool, c.end, {}, c.rapid, c.tag, false});
+    out({Kind::Line, tool, c.end, {}, c.rapid, c.tag, false, false});
     tool = c.end;
     offset = false;
     held.reset();
@@ -157,6 +157,25 @@ struct Compensator::Impl {
     if (zeroLine(c, eps())) return {offsetPoint(a.seg, a.seg.end, dA, eps())};
     auto rule = opt.startupTypeB ? corner::Rule::CancelB : corner::Rule::CancelA;
     return corner::place(a.seg, dA, c, dA, rule, eps());
+  }
+
+  void suspend() {
+    if (held) {
+      const Held a = *held;
+      if (a.seg.kind == Kind::Line) {
+        // A straight block simply ends on its programmed point.
+        if (!a.startup) checkInterference(a.seg, a.from, a.seg.end);
+        out({Kind::Line, a.from, a.seg.end, {}, a.seg.rapid, a.seg.tag, false, false});
+      } else {
+        // An arc keeps its radius: it ends perpendicular, then the vector is removed.
+        emitCorner(a, {offsetPoint(a.seg, a.seg.end, endOffset(a.seg), eps())});
+        out({Kind::Line, tool, a.seg.end, {}, a.seg.rapid, a.seg.tag, false, false});
+      }
+      tool = a.seg.end;
+    }
+    offset = false;
+    held.reset();
+    idle = 0;
   }
 
   void finishPerpendicular() {
@@ -211,6 +230,9 @@ void Compensator::pushNonMoving(int tag) {
 }
 void Compensator::flush() {
   impl_->flush();
+}
+void Compensator::suspend() {
+  impl_->suspend();
 }
 bool Compensator::active() const {
   return impl_->offset;

@@ -44,6 +44,7 @@ struct OutSeg {
   bool rapid = false;
   int tag = -1;         // the programmed block this piece belongs to
   bool inserted = false;  // an extra corner move the control adds (outer acute corners)
+  bool vectorAtEnd = true;  // false: the piece ends on the programmed point (no vector)
 };
 
 struct Options {
@@ -71,6 +72,9 @@ class Compensator {
   void pushNonMoving(int tag);
   // End of program or a buffering stop (M00, M30, G53 ...): emit everything held.
   void flush();
+  // Lathe cycles start from their programmed start point: the held block ends there, with
+  // no vector, and the next compensated block is a new start-up (src/exec/tnrc_exec.cpp).
+  void suspend();
   bool active() const;  // compensation vectors in effect (between start-up and cancel)
 
  private:

@@ -29,6 +29,7 @@ struct ContourSeg {
   Pt end;
   Pt center;         // arcs only
   int blockIndex = -1;  // program block that produced it (for the trace)
+  int comp = -1;        // G40/G41/G42 (x10) in effect for the block; -1: as the block before
 };
 
 struct Contour {
@@ -43,6 +44,10 @@ struct Move {
   Pt center;            // arcs only
   int contourIndex = -1;  // index into Contour::segs when the move follows a contour block
   bool thread = false;    // synchronised threading feed (G92/G76/G32)
+  // Tool-nose radius compensation (G70, G90, G94 under G41/G42): the move ends on the
+  // imaginary tip `end`; `programmed` is the programmed point and `nose` the nose centre.
+  bool compensated = false;
+  Pt programmed, nose;
 };
 
 // Raised for the cycle alarms PS0061-PS0069 (and PS0062 for bad depths).

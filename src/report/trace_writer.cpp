@@ -105,6 +105,7 @@ void TraceWriter::onMove(const MoveEvent& e) {
     fmt::format_to(std::back_inserter(buf_), ",\"center\":[{},{},{}],\"plane\":{}", e.center[0], e.center[1],
                    e.center[2], e.plane);
   if (e.compensated) axes("prog_end", e.programmedEnd);
+  if (e.nose) axes("nose_end", e.noseEnd);
   if (e.thread) buf_ += ",\"thread\":true";
   if (e.pathPoints > 0) {
     buf_ += ",\"path\":[";

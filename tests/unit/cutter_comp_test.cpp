@@ -594,3 +594,40 @@ TEST(CrcFaceMilling, Seed002PassesComeInPairs) {
   EXPECT_NEAR(passY[3], passY[4], kTol);          // N150 and N170: Y -175, -175
   EXPECT_NEAR(passY[0] - passY[1], 100, kTol);  // a 2*25 band between 0 and -50 stays uncut
 }
+
+// suspend() (lathe cycles start from their programmed start point): the held start-up block
+// ends on its programmed point with no vector, and the next compensated block starts up again.
+TEST(CrcSuspend, HeldStartupEndsOnItsProgrammedPoint) {
+  Sink k;
+  k.comp.push(line({50, 30}, {2, 20}, Side::Right, 0.8, 1, true));
+  EXPECT_TRUE(k.segs.empty());  // held: the corner needs the next block
+  k.comp.suspend();
+  ASSERT_EQ(k.segs.size(), 1u);
+  expectSeg(k.segs[0], 1, {50, 30}, {2, 20});
+  EXPECT_FALSE(k.segs[0].vectorAtEnd);
+  EXPECT_FALSE(k.comp.active());
+  // A new start-up from the programmed point: (2,20) -> (0,20) along -u, then -u again, G42
+  // r = 0.8: the vector at its end is perpendicular to the next block, (0, 20.8).
+  k.comp.push(line({2, 20}, {0, 20}, Side::Right, 0.8, 2));
+  k.comp.push(line({0, 20}, {-10, 20}, Side::Right, 0.8, 3));
+  ASSERT_EQ(k.segs.size(), 2u);
+  expectSeg(k.segs[1], 2, {2, 20}, {0, 20.8});
+  EXPECT_TRUE(k.segs[1].vectorAtEnd);
+}
+
+// A held arc keeps its radius: it ends perpendicular, then a straight move removes the vector.
+TEST(CrcSuspend, HeldArcEndsPerpendicularThenDropsTheVector) {
+  Sink k;
+  k.comp.push(line({0, -10}, {0, 0}, Side::Left, 1, 1));
+  // G02 around (10,0) from (0,0) over (10,10) to (20,0): it starts along +v like the
+  // start-up (tangent, so the start-up ends perpendicular at (-1,0)); left of the travel is
+  // away from the centre: radius 10 + 1.
+  k.comp.push(arc(Kind::Cw, {0, 0}, {20, 0}, {10, 0}, Side::Left, 1, 2));
+  k.comp.suspend();
+  ASSERT_EQ(k.segs.size(), 3u);
+  // The arc ends on radius 11 at (21, 0), then the tool moves to (20, 0).
+  expectSeg(k.segs[0], 1, {0, -10}, {-1, 0});
+  expectSeg(k.segs[1], 2, {-1, 0}, {21, 0}, Kind::Cw);
+  expectSeg(k.segs[2], 2, {21, 0}, {20, 0});
+  EXPECT_FALSE(k.segs[2].vectorAtEnd);
+}
