@@ -231,8 +231,13 @@ nlohmann::json LatheStock::writeOutputs(const std::string& dir, const ClipperLib
     const char* colour = deviationColour(samples[k].d, tol_);
     std::string pts;
     size_t j = k;
-    for (; j < samples.size() && deviationColour(samples[j].d, tol_) == colour; ++j)
-      pts += fmt::format("{:.5f},{:.5f} ", samples[j].p.z, -samples[j].p.r);
+    // At most about 4000 points in all: every stride-th sample, and each run's last.
+    size_t stride = std::max<size_t>(1, samples.size() / 4000);
+    for (; j < samples.size() && deviationColour(samples[j].d, tol_) == colour; ++j) {
+      bool last = j + 1 == samples.size() || deviationColour(samples[j + 1].d, tol_) != colour;
+      if ((j - k) % stride == 0 || last)
+        pts += fmt::format("{:.5f},{:.5f} ", samples[j].p.z, -samples[j].p.r);
+    }
     if (j == k + 1) pts += fmt::format("{:.5f},{:.5f} ", samples[k].p.z + stroke, -samples[k].p.r);
     svg += fmt::format(
         "<polyline points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"{:.5f}\"/>\n", pts,

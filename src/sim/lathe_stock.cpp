@@ -41,7 +41,9 @@ double lowestOver(const ClipperLib::Path& poly, cInt a, cInt b) {
       continue;
     }
     auto at = [&](cInt z) {
-      return static_cast<double>(p.Y) + static_cast<double>(z - p.X) / static_cast<double>(q.X - p.X) * static_cast<double>(q.Y - p.Y);
+      return static_cast<double>(p.Y) + static_cast<double>(z - p.X) /
+                                            static_cast<double>(q.X - p.X) *
+                                            static_cast<double>(q.Y - p.Y);
     };
     best = std::min({best, at(lo), at(hi)});
   }
@@ -181,7 +183,8 @@ LatheStock::Clip LatheStock::makeClip(ClipperLib::Path poly) {
 // Can the clip polygon touch the tile's material? Bounds first, then the clip's lower
 // envelope against the highest material of the tile.
 bool LatheStock::reaches(const Tile& t, const Clip& c) const {
-  if (t.empty || t.zmax <= c.zlo || t.zmin >= c.zhi || t.rmax <= c.rlo || t.rmin >= c.rhi) return false;
+  if (t.empty || t.zmax <= c.zlo || t.zmin >= c.zhi || t.rmax <= c.rlo || t.rmin >= c.rhi)
+    return false;
   return static_cast<double>(t.rmax) > lowestOver(c.poly, t.zmin, t.zmax);
 }
 
@@ -189,8 +192,10 @@ bool LatheStock::queueClip(Clip c) {
   bool reached = false;
   if (!tiles_.empty() && c.zhi >= tileZ0_) {
     long first = std::max<long>(0, static_cast<long>((c.zlo - tileZ0_) / tileW_));
-    long last = std::min<long>(static_cast<long>(tiles_.size()) - 1, static_cast<long>((c.zhi - tileZ0_) / tileW_));
-    for (long k = first; k <= last && !reached; ++k) reached = reaches(tiles_[static_cast<size_t>(k)], c);
+    long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                               static_cast<long>((c.zhi - tileZ0_) / tileW_));
+    for (long k = first; k <= last && !reached; ++k)
+      reached = reaches(tiles_[static_cast<size_t>(k)], c);
   }
   // A clip that cannot reach the material now cannot after the queue either: the queue
   // only removes material.
@@ -203,7 +208,8 @@ double LatheStock::flush() {
   cInt zlo = queue_.front().zlo, zhi = queue_.front().zhi;
   for (const auto& c : queue_) zlo = std::min(zlo, c.zlo), zhi = std::max(zhi, c.zhi);
   long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
-  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1, static_cast<long>((zhi - tileZ0_) / tileW_));
+  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                             static_cast<long>((zhi - tileZ0_) / tileW_));
   double removed = 0;
   for (long k = first; k <= last; ++k) {
     Tile& t = tiles_[static_cast<size_t>(k)];
@@ -235,7 +241,8 @@ double LatheStock::flush() {
 bool LatheStock::queueLine(Pt a, Pt b) {
   ClipperLib::Path poly = toPath(lsim::sweptHull(outline_, a, b));
   // Past the spindle axis the tool cuts the other side of the part: the mirror image.
-  bool below = std::any_of(poly.begin(), poly.end(), [](const ClipperLib::IntPoint& q) { return q.Y < 0; });
+  bool below =
+      std::any_of(poly.begin(), poly.end(), [](const ClipperLib::IntPoint& q) { return q.Y < 0; });
   ClipperLib::Path mirror;
   if (below) {
     mirror = poly;
@@ -339,7 +346,11 @@ void LatheStock::captureTarget(const MoveEvent& e, const std::vector<Pt>& pts) {
     target_.push_back({progStart, progEnd, e.at.n});
     return;
   }
+  // Cutter compensation keeps the arc's centre. Nose-radius compensation moves the
+  // imaginary tip on the nose-centre arc shifted by the tip vector, and the centre with it:
+  // the programmed arc is concentric with the nose-centre arc.
   Pt c{e.center[0] / 2, e.center[2]};
+  if (e.nose) c = {c.r + (e.noseEnd[0] - e.end[0]) / 2, c.z + e.noseEnd[2] - e.end[2]};
   double a0 = std::atan2(progStart.r - c.r, progStart.z - c.z),
          a1 = std::atan2(progEnd.r - c.r, progEnd.z - c.z);
   double R = std::hypot(progEnd.r - c.r, progEnd.z - c.z), sweep = a1 - a0;

@@ -33,7 +33,7 @@ class LatheStock final : public StockModel {
   bool queueLine(lsim::Pt a, lsim::Pt b);
   double flush();  // applies the queue; returns the area removed
   double area();
-  ClipperLib::Paths profile();  // the tiles merged: outer rings and holes
+  ClipperLib::Paths profile();           // the tiles merged: outer rings and holes
   static constexpr double kScale = 1e6;  // integer units per program unit
 
  private:
