@@ -17,7 +17,7 @@
 namespace ncvm {
 namespace {
 
-constexpr float kNone = std::numeric_limits<float>::infinity();
+constexpr float kNone = 3.0e38f;  // "the tool does not reach": finite, for -ffinite-math-only
 
 // Clips `lo <= k*x + m <= hi` into [xlo, xhi]; false when no x fits.
 bool clipLinear(double k, double m, double lo, double hi, double& xlo, double& xhi) {
@@ -33,7 +33,7 @@ bool clipLinear(double k, double m, double lo, double hi, double& xlo, double& x
 // the segment (0,0)-(dx,dy): the discs at both ends and the band between them. The stadium
 // is convex, so the union is one interval.
 bool rowSpan(double ry, double dx, double dy, double r, double& lo, double& hi) {
-  lo = std::numeric_limits<double>::infinity();
+  lo = 1e300;  // no infinities: this file is built with -ffinite-math-only
   hi = -lo;
   auto disc = [&](double cx, double cy) {
     double v = r * r - (ry - cy) * (ry - cy);
@@ -47,7 +47,7 @@ bool rowSpan(double ry, double dx, double dy, double r, double& lo, double& hi) 
   double len = std::hypot(dx, dy);
   if (len > 0) {
     double ux = dx / len, uy = dy / len;
-    double bl = -std::numeric_limits<double>::infinity(), bh = -bl;
+    double bl = -1e300, bh = 1e300;
     if (clipLinear(ux, ry * uy, 0, len, bl, bh) && clipLinear(-uy, ry * ux, -r, r, bl, bh)) {
       lo = std::min(lo, bl);
       hi = std::max(hi, bh);
