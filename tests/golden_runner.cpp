@@ -167,6 +167,8 @@ TEST_P(Golden, Run) {
   for (const auto& o : others) session.store().addFile(o.string());
   if (fs::is_directory(lib)) session.addLibrary(lib.string());
   session.addBundledMacros();
+  // A setup with [stock] is simulated; its analysis is state.stock (no files written).
+  if (session.setup().stock.present) session.simulateStock("");
 
   json state, check, trace = json::array();
   std::string printed;

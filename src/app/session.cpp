@@ -1,6 +1,7 @@
 #include "app/session.hpp"
 
 #include "app/machine_state.hpp"
+#include "sim/stock_model.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -77,6 +78,19 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   Result r;
   if (!main_) throw std::runtime_error("no program to run");
   EventSink none;
+  // The stock model listens beside the caller's sink; it is built first so a setup it
+  // cannot simulate stops the job before anything runs.
+  std::unique_ptr<StockModel> stock = stockOn_ ? makeStockModel(setup_) : nullptr;
+  if (setup_.probe.useStock && (!stock || !stock->probeWorld()))
+    throw SetupError(stock ? "probe.use_stock: this stock model cannot be probed yet"
+                           : "probe.use_stock: G31 against the stock needs the stock simulation (--stock-out)",
+                     "probe.use_stock");
+  FanoutSink both;
+  if (stock) {
+    if (sink) both.add(sink);
+    both.add(stock.get());
+    sink = &both;
+  }
   Executor exec(setup_, store_, sink ? *sink : none);
   if (machineState) {
     MachineMemory mem = exec.memory();
@@ -125,6 +139,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   for (const auto& w : r.warnings)
     warns.push_back({{"code", w.code}, {"text", w.text}, {"file", files_.name(w.loc.file)}, {"line", w.loc.line}});
   s["warnings"] = warns;
+  if (stock) {
+    r.stock = stock->finish(stockOut_);
+    s["stock"] = r.stock;
+  }
   return r;
 }
 

@@ -42,7 +42,15 @@ class Session {
     nlohmann::json state;
     std::string printed;  // DPRNT/BPRNT output
     nlohmann::json machineState;
+    nlohmann::json stock;  // the stock model's analysis (null without simulateStock)
   };
+  // Simulates the stock ([stock] of the setup, src/sim/stock_model.hpp) beside the run:
+  // its files go to outDir (none when empty), its analysis to Result::stock and to
+  // state["stock"]. Throws SetupError at run() when the setup cannot be simulated.
+  void simulateStock(std::string outDir) {
+    stockOn_ = true;
+    stockOut_ = std::move(outDir);
+  }
   // Runs the main program; `sink` receives every event (may be nullptr). With a
   // machine state (memoryToJson format) the control starts from it instead of the setup's
   // offsets and #500-#999; Result::machineState is what it keeps afterwards.
@@ -58,6 +66,8 @@ class Session {
   ProgramStore store_;
   const Program* main_ = nullptr;
   std::vector<const Program*> ownPrograms_;  // from files named on the command line
+  bool stockOn_ = false;
+  std::string stockOut_;
 };
 
 nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);

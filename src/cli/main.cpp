@@ -7,12 +7,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <unistd.h>
 
 #include "app/machine_state.hpp"
 #include "app/session.hpp"
 #include "core/alarm.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
+#include "report/html_report.hpp"
 #include "report/trace_writer.hpp"
 
 namespace {
@@ -62,10 +64,26 @@ std::string hms(double seconds) {
   return fmt::format("{}:{:02d}:{:05.2f}", total / 3600, total / 60 % 60, seconds - static_cast<double>(total / 60 * 60));
 }
 
-int runCommand(const CommonOptions& o, const std::string& tracePath, const std::string& statePath,
-               const std::string& outputPath, const std::string& machineStatePath, bool quiet) {
+struct RunOutputs {
+  std::string trace, state, output, machineState, stockOut, report;
+};
+
+int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
+  const std::string& tracePath = outs.trace;
+  const std::string& statePath = outs.state;
+  const std::string& outputPath = outs.output;
+  const std::string& machineStatePath = outs.machineState;
   Session session(makeSetup(o));
   loadPrograms(session, o);
+  // The report inlines the stock pictures: without --stock-out they are made in a
+  // temporary folder that is removed afterwards.
+  std::string stockDir = outs.stockOut;
+  bool tempStock = false;
+  if (stockDir.empty() && !outs.report.empty() && session.setup().stock.present) {
+    stockDir = (std::filesystem::temp_directory_path() / fmt::format("ncvm-report-{}", ::getpid())).string();
+    tempStock = true;
+  }
+  if (!stockDir.empty()) session.simulateStock(stockDir);
   for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
 
   std::unique_ptr<AtomicFile> traceFile;
@@ -95,6 +113,11 @@ int runCommand(const CommonOptions& o, const std::string& tracePath, const std::
     traceFile->commit();
   }
   if (!statePath.empty()) writeFileAtomic(statePath, r.state.dump(2) + "\n");
+  if (!outs.report.empty()) {
+    const Program* m = session.main();
+    writeFileAtomic(outs.report, htmlReport(r.state, fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label), stockDir));
+  }
+  if (tempStock) std::filesystem::remove_all(stockDir);
   std::string out = !outputPath.empty() ? outputPath : session.setup().dprntPath;
   if (!r.printed.empty()) {
     if (out.empty())
@@ -114,6 +137,19 @@ int runCommand(const CommonOptions& o, const std::string& tracePath, const std::
       fmt::print("{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
     if (!tracePath.empty()) fmt::print("  trace: {}\n", tracePath);
     if (!statePath.empty()) fmt::print("  state: {}\n", statePath);
+    if (r.stock.is_object()) {
+      const auto& st = r.stock;
+      if (st.contains("deviation") && st["deviation"].is_object())
+        fmt::print("  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % within {}\n",
+                   st["deviation"]["max"].get<double>(), st["deviation"]["max_excess"].get<double>(),
+                   st["deviation"]["max_gouge"].get<double>(), st["deviation"]["mean"].get<double>(),
+                   100 * st["deviation"]["in_tolerance"].get<double>(), st["deviation"]["tolerance"].get<double>());
+      if (st.contains("collisions") && !st["collisions"].empty())
+        fmt::print("  stock: {} collision(s), the first at {}:{}\n", st["collisions"].size(),
+                   st["collisions"][0].value("file", std::string()), st["collisions"][0].value("line", 0));
+      if (!outs.stockOut.empty()) fmt::print("  stock: {}\n", outs.stockOut);
+    }
+    if (!outs.report.empty()) fmt::print("  report: {}\n", outs.report);
     if (!r.printed.empty() && !out.empty()) fmt::print("  output: {}\n", out);
   }
   if (r.alarm) {
@@ -167,14 +203,17 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   CommonOptions runOpts;
-  std::string tracePath, statePath, outputPath, machineStatePath;
+  RunOutputs outs;
   bool quiet = false;
   auto* run = app.add_subcommand("run", "run a program and report what the machine does");
   addCommon(run, runOpts);
-  run->add_option("--trace", tracePath, "write the event trace (JSON Lines)");
-  run->add_option("--state", statePath, "write the final state (JSON)");
-  run->add_option("--output", outputPath, "file for DPRNT/BPRNT output");
-  run->add_option("--machine-state", machineStatePath,
+  run->add_option("--trace", outs.trace, "write the event trace (JSON Lines)");
+  run->add_option("--state", outs.state, "write the final state (JSON)");
+  run->add_option("--output", outs.output, "file for DPRNT/BPRNT output");
+  run->add_option("--stock-out", outs.stockOut,
+                  "simulate the setup's [stock]: write the final stock, pictures and analysis.json into DIR");
+  run->add_option("--report", outs.report, "write a self-contained HTML report (summary, alarms, pictures, deviation)");
+  run->add_option("--machine-state", outs.machineState,
                   "persistent memory (#500-#999, offsets, part counters): loaded if it exists, saved after the run");
   run->add_flag("-q,--quiet", quiet, "print only alarms");
 
@@ -198,7 +237,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   try {
-    if (run->parsed()) return runCommand(runOpts, tracePath, statePath, outputPath, machineStatePath, quiet);
+    if (run->parsed()) return runCommand(runOpts, outs, quiet);
     if (check->parsed()) return checkCommand(checkOpts, json);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <filesystem>
 #include <toml++/toml.h>
 #include <variant>
 
@@ -271,16 +272,24 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     else if (field == "flute_length") t.fluteLength = asNumber(v, w);
     else if (field == "nose_radius") t.noseRadius = asNumber(v, w);
     else if (field == "tip") t.tip = static_cast<int>(asInteger(v, w));
+    else if (field == "insert_angle") {
+      t.insertAngle = asNumber(v, w);
+      if (!(t.insertAngle > 0 && t.insertAngle < 180)) bad(w, "insert_angle is between 0 and 180 degrees");
+    } else if (field == "edge_length") {
+      t.edgeLength = asNumber(v, w);
+      if (t.edgeLength < 0) bad(w, "must not be negative");
+    }
     else if (field == "holder_diameter") t.holderDiameter = asNumber(v, w);
     else if (field == "holder_length") t.holderLength = asNumber(v, w);
-    else bad(w, "tool fields: type diameter corner_radius length point_angle flute_length nose_radius tip holder_diameter holder_length");
+    else bad(w, "tool fields: type diameter corner_radius length point_angle flute_length nose_radius tip insert_angle edge_length holder_diameter holder_length");
     return;
   }
   if (head == "probe") {
     if (rest == "tool") s.probe.tool = static_cast<int>(asInteger(v, w));
     else if (rest == "ball_diameter") s.probe.ballDiameter = asNumber(v, w);
     else if (rest == "miss_alarm") s.probe.missAlarm = asBool(v, w);
-    else bad(w, "probe keys: tool ball_diameter miss_alarm");
+    else if (rest == "use_stock") s.probe.useStock = asBool(v, w);
+    else bad(w, "probe keys: tool ball_diameter miss_alarm use_stock");
     return;
   }
   if (head == "solids") {
@@ -315,6 +324,65 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     else if (field == "top") so.top = asNumber(v, w);
     else if (field == "bottom") so.bottom = asNumber(v, w);
     else bad(w, "solid fields: kind frame center diameter outer_diameter top bottom min max point normal");
+    return;
+  }
+  if (head == "stock") {
+    StockSpec& st = s.stock;
+    st.present = true;
+    if (!st.line) st.line = line;
+    auto nonNegative = [&](double d) {
+      if (d < 0) bad(w, "must not be negative");
+      return d;
+    };
+    auto box = [&]() {
+      const auto* arr = std::get_if<std::vector<double>>(&v);
+      if (!arr || arr->size() != 3) bad(w, "expected [x, y, z]");
+      return *arr;
+    };
+    if (rest == "frame") {
+      st.frame = asString(v, w);
+      if (st.frame != "work" && st.frame != "machine" && workOffsetIndex(st.frame) < 0)
+        bad(w, "frame is work, machine or a work offset (G54, ...)");
+    } else if (rest == "diameter") st.diameter = nonNegative(asNumber(v, w));
+    else if (rest == "bore_diameter") st.boreDiameter = nonNegative(asNumber(v, w));
+    else if (rest == "length") st.length = nonNegative(asNumber(v, w));
+    else if (rest == "front_z") st.frontZ = asNumber(v, w);
+    else if (rest == "min") st.min = box();
+    else if (rest == "max") st.max = box();
+    else if (rest == "cell") st.cell = nonNegative(asNumber(v, w));
+    else bad(w, "stock keys: frame diameter bore_diameter length front_z (lathe); min max cell (mill)");
+    return;
+  }
+  if (head == "target") {
+    TargetSpec& tg = s.target;
+    tg.present = true;
+    if (!tg.line) tg.line = line;
+    if (rest == "blocks") {
+      // "N60..N100" (or "60..100", or one block "N200")
+      std::string text = std::holds_alternative<double>(v) ? std::to_string(asInteger(v, w)) : asString(v, w);
+      auto number = [&](std::string part) {
+        if (!part.empty() && (part[0] == 'N' || part[0] == 'n')) part = part.substr(1);
+        int n = -1;
+        auto r = std::from_chars(part.data(), part.data() + part.size(), n);
+        if (part.empty() || r.ec != std::errc() || r.ptr != part.data() + part.size() || n < 0)
+          bad(w, "expected \"N60..N100\" or \"N200\"");
+        return n;
+      };
+      auto dots = text.find("..");
+      tg.fromN = number(text.substr(0, dots));
+      tg.toN = dots == std::string::npos ? tg.fromN : number(text.substr(dots + 2));
+      if (tg.toN < tg.fromN) bad(w, "the first N must not be above the last");
+    } else if (rest == "polyline") tg.polyline = asString(v, w);
+    else if (rest == "shift") {
+      const auto* arr = std::get_if<std::vector<double>>(&v);
+      if (!arr || arr->size() != 2) bad(w, "expected [U, W] (U as a diameter)");
+      tg.shift = {(*arr)[0], (*arr)[1]};
+    } else if (rest == "face_z") tg.faceZ = asNumber(v, w);
+    else if (rest == "height_map") tg.heightMap = asString(v, w);
+    else if (rest == "tolerance") {
+      tg.tolerance = asNumber(v, w);
+      if (!(tg.tolerance > 0)) bad(w, "must be positive");
+    } else bad(w, "target keys: blocks polyline shift (lathe); face_z height_map (mill); tolerance");
     return;
   }
   bad(w, "unknown key");
@@ -433,6 +501,10 @@ Setup loadSetup(const std::string& path) {
                      "", static_cast<int>(e.source().begin.line));
   }
   walk(s, t, "");
+  // Files named by the setup are found beside it.
+  std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  for (std::string* f : {&s.target.polyline, &s.target.heightMap})
+    if (!f->empty() && std::filesystem::path(*f).is_relative()) *f = (dir / *f).string();
   return s;
 }
 

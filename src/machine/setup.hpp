@@ -38,6 +38,9 @@ struct ToolSpec {
   double diameter = 0, cornerRadius = 0, length = 0, pointAngle = 118, fluteLength = 0;
   double noseRadius = 0;  // lathe insert
   int tip = 0;            // lathe insert imaginary tip direction
+  // Lathe insert body for the stock simulation: included angle of the two cutting edges
+  // (symmetric about the tip direction) and their length from the nose.
+  double insertAngle = 80, edgeLength = 0;  // edge length 0 = 10 mm (0.4 in)
   double holderDiameter = 0, holderLength = 0;
 };
 
@@ -55,6 +58,35 @@ struct ProbeSpec {
   int tool = -1;            // T number of the probe; -1: every tool probes as a sphere
   double ballDiameter = 0;  // stylus ball; 0 = the tool's diameter from [tools]
   bool missAlarm = false;   // G31 that touches nothing: alarm PS9010 instead of ending normally
+  bool useStock = false;    // G31 touches the simulated stock ([stock]) instead of [[solids]]
+};
+
+// The raw material of the stock simulation (src/sim), in program units, in the coordinates
+// the moves are reported in (work coordinates; lathe X as a diameter).
+struct StockSpec {
+  bool present = false;
+  std::string frame = "work";  // work (the moves' coordinates), machine, or a work offset name
+  // Lathe: a bar (bore 0) or a tube along Z from frontZ back to frontZ - length.
+  double diameter = 0, boreDiameter = 0, length = 0, frontZ = 0;
+  // Mill: a box between min and max [x, y, z], simulated in cells of `cell`.
+  std::vector<double> min, max;
+  double cell = 0;  // 0 = the model's default
+  int line = 0;
+};
+
+// What the stock should become, for the deviation analysis.
+struct TargetSpec {
+  bool present = false;
+  // Lathe: the feed moves of blocks N fromN..toN of the main program (first pass), or a
+  // polyline file of X (diameter) Z points; shift [U (diameter), W] moves it (allowances).
+  int fromN = -1, toN = -1;
+  std::string polyline;
+  std::array<double, 2> shift{};
+  // Mill: a flat floor at faceZ, or a height-map file.
+  std::optional<double> faceZ;
+  std::string heightMap;
+  double tolerance = 0;  // deviation band width; 0 = 0.01 mm (0.0004 in)
+  int line = 0;
 };
 
 // Offsets as the operator enters them: mm (or inch), lathe X as a diameter.
@@ -107,6 +139,8 @@ struct Setup {
   std::map<int, ToolSpec> tools;
   ProbeSpec probe;
   std::vector<SolidSpec> solids;
+  StockSpec stock;
+  TargetSpec target;
 
   Series series() const;
   double param(const std::string& key, double fallback) const;

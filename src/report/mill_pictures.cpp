@@ -28,29 +28,32 @@ void range(const HeightField& f, float& lo, float& hi) {
   }
 }
 
-void put(uint8_t* p, double r, double g, double b) {
-  p[0] = static_cast<uint8_t>(std::clamp(r, 0.0, 1.0) * 255 + 0.5);
-  p[1] = static_cast<uint8_t>(std::clamp(g, 0.0, 1.0) * 255 + 0.5);
-  p[2] = static_cast<uint8_t>(std::clamp(b, 0.0, 1.0) * 255 + 0.5);
+uint8_t byte(double v) {
+  return static_cast<uint8_t>(std::clamp(v, 0.0, 1.0) * 255 + 0.5);
+}
+void put(RgbImage& img, int x, int y, double r, double g, double b) {
+  img.set(x, y, byte(r), byte(g), byte(b));
 }
 
 }  // namespace
 
-Image millHeightMap(const HeightField& f, int maxSide) {
+RgbImage millHeightMap(const HeightField& f, int maxSide) {
   Sampler s(f, maxSide);
-  Image img(s.w, s.h, 1);
+  RgbImage img(s.w, s.h);
   float lo, hi;
   range(f, lo, hi);
   double span = hi > lo ? hi - lo : 1.0;
   for (int y = 0; y < s.h; ++y)
-    for (int x = 0; x < s.w; ++x)
-      *img.at(x, y) = static_cast<uint8_t>((f.at(s.i(x), s.j(y)) - lo) / span * 255 + 0.5);
+    for (int x = 0; x < s.w; ++x) {
+      double v = (f.at(s.i(x), s.j(y)) - lo) / span;
+      put(img, x, y, v, v, v);
+    }
   return img;
 }
 
-Image millTopView(const HeightField& f, const MillTarget* target, int maxSide) {
+RgbImage millTopView(const HeightField& f, const MillTarget* target, int maxSide) {
   Sampler s(f, maxSide);
-  Image img(s.w, s.h, 3);
+  RgbImage img(s.w, s.h);
   float lo, hi;
   range(f, lo, hi);
   double span = hi > lo ? hi - lo : 1.0;
@@ -75,34 +78,33 @@ Image millTopView(const HeightField& f, const MillTarget* target, int maxSide) {
             b = 0.55 + 0.45 * grey, r = g = 0.25 * grey;
         }
       }
-      put(img.at(x, y), r, g, b);
+      put(img, x, y, r, g, b);
     }
   return img;
 }
 
-Image millDeviationMap(const HeightField& f, const MillTarget& target, int maxSide) {
+RgbImage millDeviationMap(const HeightField& f, const MillTarget& target, int maxSide) {
   Sampler s(f, maxSide);
-  Image img(s.w, s.h, 3);
+  RgbImage img(s.w, s.h);
   const double t = target.tolerance;
   for (int y = 0; y < s.h; ++y)
     for (int x = 0; x < s.w; ++x) {
       int i = s.i(x), j = s.j(y);
       double want = targetHeight(f, target, i, j);
-      uint8_t* p = img.at(x, y);
       if (std::isnan(want)) {
-        put(p, 0.6, 0.6, 0.6);
+        put(img, x, y, 0.6, 0.6, 0.6);
         continue;
       }
       double dev = f.at(i, j) - want;
       if (std::abs(dev) <= t) {
-        put(p, 0.2, 0.75, 0.2);
+        put(img, x, y, 0.2, 0.75, 0.2);
       } else {
         // 0 at the tolerance, 1 at 10 tolerances (log scale), towards red or blue.
         double u = std::clamp(std::log10(std::abs(dev) / t), 0.0, 1.0);
         if (dev > 0)
-          put(p, 0.8 + 0.2 * u, 0.8 * (1 - u), 0.1);
+          put(img, x, y, 0.8 + 0.2 * u, 0.8 * (1 - u), 0.1);
         else
-          put(p, 0.1, 0.8 * (1 - u), 0.8 + 0.2 * u);
+          put(img, x, y, 0.1, 0.8 * (1 - u), 0.8 + 0.2 * u);
       }
     }
   return img;

@@ -12,8 +12,8 @@
 
 namespace ncvm {
 
-Image millHeightMap(const HeightField& f, int maxSide = 1600);
-Image millTopView(const HeightField& f, const MillTarget* target, int maxSide = 1600);
-Image millDeviationMap(const HeightField& f, const MillTarget& target, int maxSide = 1600);
+RgbImage millHeightMap(const HeightField& f, int maxSide = 1600);
+RgbImage millTopView(const HeightField& f, const MillTarget* target, int maxSide = 1600);
+RgbImage millDeviationMap(const HeightField& f, const MillTarget& target, int maxSide = 1600);
 
 }  // namespace ncvm

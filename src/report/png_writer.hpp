@@ -1,26 +1,24 @@
 #pragma once
-// A minimal PNG encoder (8-bit grey or RGB, no interlace) on top of zlib: enough for the
-// stock pictures, without pulling in libpng.
+// PNG encoding of an 8-bit RGB image (zlib deflate), for the stock pictures.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace ncvm {
 
-struct Image {
-  int width = 0, height = 0, channels = 3;  // 1 = grey, 3 = RGB
-  std::vector<uint8_t> pixels;              // row-major, top row first
-  Image() = default;
-  Image(int w, int h, int c)
-      : width(w), height(h), channels(c), pixels(size_t(w) * size_t(h) * size_t(c), 0) {}
-  uint8_t* at(int x, int y) {
-    return pixels.data() + (size_t(y) * size_t(width) + size_t(x)) * size_t(channels);
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;  // row-major, top row first, 3 bytes per pixel
+  RgbImage(int w, int h, uint8_t fill = 255)
+      : width(w), height(h), rgb(static_cast<size_t>(w) * h * 3, fill) {}
+  void set(int x, int y, uint8_t r, uint8_t g, uint8_t b) {
+    if (x < 0 || y < 0 || x >= width || y >= height) return;
+    size_t i = (static_cast<size_t>(y) * width + x) * 3;
+    rgb[i] = r, rgb[i + 1] = g, rgb[i + 2] = b;
   }
 };
 
 // The PNG file's bytes.
-std::string encodePng(const Image& img);
-// Writes it atomically; throws std::runtime_error on failure.
-void writePng(const std::string& path, const Image& img);
+std::string encodePng(const RgbImage& img);
 
 }  // namespace ncvm

@@ -1,5 +1,6 @@
 #include "sim/mill_analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -27,8 +28,9 @@ MillAnalysis analyseMill(const HeightField& stock, const MillTarget& target) {
   a.tolerance = target.tolerance;
   a.cellArea = stock.cell() * stock.cell();
   const double t = target.tolerance, inf = std::numeric_limits<double>::infinity();
-  // Bands in multiples of the tolerance; the middle one is "within tolerance".
-  const double edges[] = {-inf, -10 * t, -4 * t, -2 * t, -t, t, 2 * t, 4 * t, 10 * t, inf};
+  // Bands at +-1, 2, 3, 5 tolerances, as for the lathe (sim/deviation.hpp); the middle one
+  // is "within tolerance".
+  const double edges[] = {-inf, -5 * t, -3 * t, -2 * t, -t, t, 2 * t, 3 * t, 5 * t, inf};
   for (size_t k = 0; k + 1 < std::size(edges); ++k) a.bands.push_back({edges[k], edges[k + 1], 0});
   double sum = 0, sumAbs = 0;
   for (int j = 0; j < stock.ny(); ++j) {
@@ -65,31 +67,82 @@ MillAnalysis analyseMill(const HeightField& stock, const MillTarget& target) {
 }
 
 nlohmann::json MillAnalysis::toJson() const {
+  // The common deviation fields (docs/stock-analysis.md) first, then the mill's own.
   nlohmann::json bandsJson = nlohmann::json::array();
   auto edge = [](double v) -> nlohmann::json {
     if (std::isinf(v)) return nullptr;
     return v;
   };
-  for (const auto& b : bands) {
-    double pct = cells ? 100.0 * static_cast<double>(b.cells) / static_cast<double>(cells) : 0;
+  const double n = static_cast<double>(cells);
+  for (const auto& b : bands)
     bandsJson.push_back({{"from", edge(b.lo)},
                          {"to", edge(b.hi)},
-                         {"cells", b.cells},
-                         {"area", static_cast<double>(b.cells) * cellArea},
-                         {"percent", pct}});
-  }
-  double total = static_cast<double>(cells) * cellArea;
+                         {"share", cells ? static_cast<double>(b.cells) / n : 0.0},
+                         {"area", static_cast<double>(b.cells) * cellArea}});
+  double total = n * cellArea;
   return {{"tolerance", tolerance},
-          {"cells", cells},
-          {"area", total},
+          {"samples", cells},
+          {"max", std::max(maxExcess, maxGouge)},
+          {"mean", meanAbsDeviation},
           {"max_excess", maxExcess},
           {"max_gouge", maxGouge},
-          {"mean_deviation", meanDeviation},
-          {"mean_abs_deviation", meanAbsDeviation},
+          {"in_tolerance", cells ? static_cast<double>(bands[4].cells) / n : 1.0},
+          {"bands", bandsJson},
+          {"mean_signed", meanDeviation},
+          {"area", total},
           {"uncut_area", uncutArea()},
-          {"uncut_percent", total > 0 ? 100.0 * uncutArea() / total : 0.0},
-          {"gouge_area", gougeArea()},
-          {"bands", bandsJson}};
+          {"uncut_share", total > 0 ? uncutArea() / total : 0.0},
+          {"gouge_area", gougeArea()}};
+}
+
+}  // namespace ncvm
+
+namespace ncvm {
+
+std::vector<UncutRegion> uncutRegions(const HeightField& stock, const MillTarget& target,
+                                      size_t limit) {
+  const int nx = stock.nx(), ny = stock.ny();
+  auto idx = [&](int i, int j) { return static_cast<size_t>(j) * static_cast<size_t>(nx) + i; };
+  std::vector<uint8_t> uncut(static_cast<size_t>(nx) * static_cast<size_t>(ny), 0);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      double want = targetHeight(stock, target, i, j);
+      if (!std::isnan(want) && stock.at(i, j) - want > target.tolerance) uncut[idx(i, j)] = 1;
+    }
+  // Flood fill each patch (an explicit stack: patches can have millions of cells).
+  std::vector<UncutRegion> out;
+  std::vector<std::pair<int, int>> stack;
+  const double c = stock.cell();
+  for (int j0 = 0; j0 < ny; ++j0)
+    for (int i0 = 0; i0 < nx; ++i0) {
+      if (uncut[idx(i0, j0)] != 1) continue;
+      int imin = i0, imax = i0, jmin = j0, jmax = j0;
+      uint64_t count = 0;
+      uncut[idx(i0, j0)] = 2;
+      stack.push_back({i0, j0});
+      while (!stack.empty()) {
+        auto [i, j] = stack.back();
+        stack.pop_back();
+        ++count;
+        imin = std::min(imin, i), imax = std::max(imax, i);
+        jmin = std::min(jmin, j), jmax = std::max(jmax, j);
+        const int ni[] = {i - 1, i + 1, i, i}, nj[] = {j, j, j - 1, j + 1};
+        for (int k = 0; k < 4; ++k) {
+          if (ni[k] < 0 || nj[k] < 0 || ni[k] >= nx || nj[k] >= ny) continue;
+          uint8_t& u = uncut[idx(ni[k], nj[k])];
+          if (u == 1) {
+            u = 2;
+            stack.push_back({ni[k], nj[k]});
+          }
+        }
+      }
+      out.push_back({stock.x0() + imin * c, stock.y0() + jmin * c, stock.x0() + (imax + 1) * c,
+                     stock.y0() + (jmax + 1) * c, static_cast<double>(count) * c * c, count});
+    }
+  std::sort(out.begin(), out.end(),
+            [](const UncutRegion& a, const UncutRegion& b) { return a.cells > b.cells; });
+  if (out.size() > limit) out.resize(limit);
+  return out;
 }
 
 }  // namespace ncvm

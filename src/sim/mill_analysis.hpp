@@ -46,3 +46,18 @@ double targetHeight(const HeightField& stock, const MillTarget& target, int i, i
 MillAnalysis analyseMill(const HeightField& stock, const MillTarget& target);
 
 }  // namespace ncvm
+
+namespace ncvm {
+
+// A connected patch of uncut cells (deviation > tolerance, 4-neighbours).
+struct UncutRegion {
+  double xmin, ymin, xmax, ymax;  // extent of the cells (their edges, not centres)
+  double area;
+  uint64_t cells;
+};
+
+// The uncut regions, largest first, at most `limit` of them.
+std::vector<UncutRegion> uncutRegions(const HeightField& stock, const MillTarget& target,
+                                      size_t limit = 20);
+
+}  // namespace ncvm

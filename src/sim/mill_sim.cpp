@@ -63,7 +63,7 @@ void MillSim::run(int index, std::vector<float>& pen) {
       pen[3 * k + 2] = holderPenetration(field_, t.holderRadius, t.holderZ, op.a, op.b, s);
     float cut = op.arc ? sweepArcXY(field_, t, op.cx, op.cy, op.radius, op.a0, op.sweep, op.a[2], s)
                        : sweepLine(field_, t, op.a, op.b, s);
-    if (op.rapid) pen[3 * k] = cut;
+    pen[3 * k] = cut;
   }
 }
 
@@ -79,7 +79,12 @@ void MillSim::flush() {
     for (int what = 0; what < 3; ++what) {
       float depth = 0;
       for (const auto& p : pens) depth = std::max(depth, p[3 * k + what]);
-      if (depth > kContactDepth)
+      if (what == 0 && depth > 0 && (!anyCut_ || lastCutTag_ != ops_[k].tag)) {
+        ++cuttingMoves_;
+        anyCut_ = true;
+        lastCutTag_ = ops_[k].tag;
+      }
+      if (depth > kContactDepth && (what != 0 || ops_[k].rapid))
         contacts_.push_back({static_cast<MillContact::Kind>(what), ops_[k].tag, depth});
     }
   }

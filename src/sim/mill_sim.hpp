@@ -46,6 +46,11 @@ class MillSim {
     return contacts_;
   }
   uint64_t moves() const { return moves_; }
+  // Moves (distinct tags in a row) that removed material.
+  uint64_t cuttingMoves() {
+    flush();
+    return cuttingMoves_;
+  }
   int threads() const { return threads_; }
 
   static constexpr double kContactDepth = 0.001;  // mm: less is float noise, not a collision
@@ -68,7 +73,9 @@ class MillSim {
   const MillTool* tool_ = nullptr;
   std::vector<Op> ops_;
   std::vector<MillContact> contacts_;
-  uint64_t moves_ = 0;
+  uint64_t moves_ = 0, cuttingMoves_ = 0;
+  uint32_t lastCutTag_ = 0;
+  bool anyCut_ = false;
 };
 
 }  // namespace ncvm

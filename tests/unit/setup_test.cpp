@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "machine/setup.hpp"
@@ -54,5 +55,60 @@ TEST(Setup, TomlFileWithLineOfBadKey) {
     EXPECT_EQ(e.key, "limits.max_blocks");
     EXPECT_EQ(e.line, 5);
   }
+  std::remove(path.c_str());
+}
+
+TEST(Setup, StockAndTargetSections) {
+  ncvm::Setup s = defaultSetup(MachineKind::Lathe);
+  applySetting(s, "stock.diameter=80");
+  applySetting(s, "stock.length=120.5");
+  applySetting(s, "stock.front_z=0.5");
+  applySetting(s, "stock.bore_diameter=20");
+  applySetting(s, "target.blocks=N60..N100");
+  applySetting(s, "target.shift=[0.03,0.01]");
+  applySetting(s, "target.tolerance=0.005");
+  EXPECT_TRUE(s.stock.present);
+  EXPECT_DOUBLE_EQ(s.stock.diameter, 80);
+  EXPECT_DOUBLE_EQ(s.stock.length, 120.5);
+  EXPECT_DOUBLE_EQ(s.stock.frontZ, 0.5);
+  EXPECT_DOUBLE_EQ(s.stock.boreDiameter, 20);
+  EXPECT_EQ(s.target.fromN, 60);
+  EXPECT_EQ(s.target.toN, 100);
+  EXPECT_DOUBLE_EQ(s.target.shift[0], 0.03);
+  EXPECT_DOUBLE_EQ(s.target.tolerance, 0.005);
+  applySetting(s, "target.blocks=200");
+  EXPECT_EQ(s.target.fromN, 200);
+  EXPECT_EQ(s.target.toN, 200);
+  EXPECT_THROW(applySetting(s, "target.blocks=N100..N60"), SetupError);
+  EXPECT_THROW(applySetting(s, "target.blocks=N1x"), SetupError);
+  EXPECT_THROW(applySetting(s, "stock.diameter=-1"), SetupError);
+  EXPECT_THROW(applySetting(s, "stock.colour=red"), SetupError);
+  EXPECT_THROW(applySetting(s, "stock.frame=G99"), SetupError);
+
+  ncvm::Setup m = defaultSetup();
+  applySetting(m, "stock.min=[-50,-50,-20]");
+  applySetting(m, "stock.max=[50,50,0]");
+  applySetting(m, "stock.cell=0.05");
+  applySetting(m, "stock.frame=G54");
+  applySetting(m, "target.face_z=-0.5");
+  ASSERT_EQ(m.stock.min.size(), 3u);
+  EXPECT_DOUBLE_EQ(m.stock.max[0], 50);
+  EXPECT_DOUBLE_EQ(m.stock.cell, 0.05);
+  EXPECT_EQ(m.stock.frame, "G54");
+  ASSERT_TRUE(m.target.faceZ.has_value());
+  EXPECT_DOUBLE_EQ(*m.target.faceZ, -0.5);
+  EXPECT_THROW(applySetting(m, "stock.min=[1,2]"), SetupError);
+}
+
+TEST(Setup, TargetFilesAreFoundBesideTheSetup) {
+  std::string dir = ::testing::TempDir();
+  std::string path = dir + "/target_setup.toml";
+  {
+    std::ofstream f(path);
+    f << "[machine]\nkind = \"lathe\"\n[target]\npolyline = \"contour.csv\"\n[probe]\nuse_stock = true\n";
+  }
+  ncvm::Setup s = loadSetup(path);
+  EXPECT_EQ(s.target.polyline, (std::filesystem::path(dir) / "contour.csv").string());
+  EXPECT_TRUE(s.probe.useStock);
   std::remove(path.c_str());
 }

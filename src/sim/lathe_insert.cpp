@@ -1,0 +1,123 @@
+#include "sim/lathe_insert.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace ncvm::lsim {
+
+Pt tipDirection(int tip) {
+  // X up (r), Z right: 1 = (+X,+Z), 2 = (+X,-Z), 3 = (-X,-Z), 4 = (-X,+Z), 5 = +Z, 6 = +X,
+  // 7 = -Z, 8 = -X (docs/fanuc-decisions.md).
+  constexpr double h = std::numbers::sqrt2 / 2;
+  switch (tip) {
+    case 1:
+      return {h, h};
+    case 2:
+      return {h, -h};
+    case 3:
+      return {-h, -h};
+    case 4:
+      return {-h, h};
+    case 5:
+      return {0, 1};
+    case 6:
+      return {1, 0};
+    case 7:
+      return {0, -1};
+    case 8:
+      return {-1, 0};
+    default:
+      return {0, 0};
+  }
+}
+
+namespace {
+
+// A drill (or an end mill used on the lathe centre line): point at the programmed point,
+// body along +Z.
+std::vector<Pt> drillOutline(const ToolSpec& t, double defaultLength) {
+  double R = t.diameter / 2;
+  double length = t.fluteLength > 0 ? t.fluteLength : defaultLength;
+  double pointDepth = t.type == "drill" && t.pointAngle > 0 && t.pointAngle < 180
+                          ? R / std::tan(t.pointAngle * std::numbers::pi / 360)
+                          : 0.0;
+  std::vector<Pt> out{{-R, pointDepth}, {0, 0}, {R, pointDepth}, {R, length}, {-R, length}};
+  if (pointDepth == 0) out = {{-R, 0}, {R, 0}, {R, length}, {-R, length}};
+  return out;
+}
+
+}  // namespace
+
+std::vector<Pt> toolOutline(const ToolSpec& t, double chordError, double defaultEdge) {
+  if (t.type != "insert" && t.diameter > 0) return drillOutline(t, defaultEdge);
+  double r = t.noseRadius;
+  Pt dir = tipDirection(t.tip);
+  // Tip 0/9: the program drives the nose centre; the insert body is taken as an OD tool's (tip 3).
+  Pt body = dir.r == 0 && dir.z == 0 ? Pt{std::numbers::sqrt2 / 2, std::numbers::sqrt2 / 2}
+                                     : Pt{-dir.r, -dir.z};
+  // The imaginary tip is where the tangents parallel to the axes meet: for a diagonal
+  // tip r * (+-1, +-1) from the centre, for an axial one r along it.
+  Pt centre{0, 0};
+  if (dir.r != 0 || dir.z != 0) {
+    double sr = dir.r == 0 ? 0 : (dir.r > 0 ? 1 : -1), sz = dir.z == 0 ? 0 : (dir.z > 0 ? 1 : -1);
+    centre = {-r * sr, -r * sz};
+  }
+  double edge = t.edgeLength > 0 ? t.edgeLength : defaultEdge;
+  double half = t.insertAngle * std::numbers::pi / 360;
+  double b = std::atan2(body.r, body.z);  // angle of the body direction in the (z, r) plane
+  // The edges leave the nose at b -+ half; each is tangent to the circle where the radius
+  // is perpendicular to it, on the side away from the body.
+  double e1 = b - half, e2 = b + half;
+  double n1 = e1 - std::numbers::pi / 2, n2 = e2 + std::numbers::pi / 2;
+  std::vector<Pt> out;
+  auto at = [&](double a, double rad) {
+    return Pt{centre.r + rad * std::sin(a), centre.z + rad * std::cos(a)};
+  };
+  if (r > 0) {
+    // The arc facing the tip runs from n2 on round to n1 + 2 pi (180 - angle degrees).
+    double span = n1 + 2 * std::numbers::pi - n2;
+    double step = 2 * std::acos(std::max(-1.0, 1 - chordError / r));
+    int n = std::max(2, static_cast<int>(std::ceil(span / step)));
+    // Vertices a little outside the circle, chord middles a little inside: the polygon
+    // errs by about chordError / 2 either way instead of always leaving material.
+    double rad = r * (1 + 1 / std::cos(span / n / 2)) / 2;
+    out.push_back(at(n2, r));
+    for (int k = 1; k < n; ++k) out.push_back(at(n2 + span * k / n, rad));
+    out.push_back(at(n1, r));
+  } else {
+    out.push_back(centre);
+  }
+  Pt t1 = at(n1, r), t2 = at(n2, r);
+  out.push_back({t1.r + edge * std::sin(e1), t1.z + edge * std::cos(e1)});
+  out.push_back({t2.r + edge * std::sin(e2), t2.z + edge * std::cos(e2)});
+  return out;
+}
+
+std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b) {
+  std::vector<Pt> pts;
+  pts.reserve(outline.size() * 2);
+  for (const Pt& p : outline) pts.push_back({p.r + a.r, p.z + a.z});
+  if (a.r != b.r || a.z != b.z)
+    for (const Pt& p : outline) pts.push_back({p.r + b.r, p.z + b.z});
+  // Andrew's monotone chain in (z, r).
+  std::sort(pts.begin(), pts.end(),
+            [](const Pt& p, const Pt& q) { return p.z < q.z || (p.z == q.z && p.r < q.r); });
+  auto cross = [](const Pt& o, const Pt& p, const Pt& q) {
+    return (p.z - o.z) * (q.r - o.r) - (p.r - o.r) * (q.z - o.z);
+  };
+  std::vector<Pt> hull(pts.size() * 2);
+  size_t k = 0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], pts[i]) <= 0) --k;
+    hull[k++] = pts[i];
+  }
+  for (size_t i = pts.size() - 1, lower = k + 1; i > 0; --i) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], pts[i - 1]) <= 0) --k;
+    hull[k++] = pts[i - 1];
+  }
+  hull.resize(k > 1 ? k - 1 : k);
+  return hull;
+}
+
+}  // namespace ncvm::lsim

@@ -1,0 +1,312 @@
+#include "sim/lathe_stock.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+namespace ncvm {
+
+using ClipperLib::cInt;
+using lsim::Pt;
+
+namespace {
+
+cInt toInt(double v) {
+  return static_cast<cInt>(std::llround(v * LatheStock::kScale));
+}
+
+ClipperLib::Path toPath(const std::vector<Pt>& pts) {
+  ClipperLib::Path p;
+  p.reserve(pts.size());
+  for (const Pt& q : pts) p.push_back({toInt(q.z), toInt(q.r)});  // X = z, Y = r
+  return p;
+}
+
+double pathsArea(const ClipperLib::Paths& ps) {
+  double a = 0;
+  for (const auto& p : ps) a += ClipperLib::Area(p);
+  return a / (LatheStock::kScale * LatheStock::kScale);
+}
+
+}  // namespace
+
+std::unique_ptr<StockModel> makeLatheStock(const Setup& setup) {
+  return std::make_unique<LatheStock>(setup);
+}
+
+LatheStock::LatheStock(const Setup& setup) : setup_(setup) {
+  const StockSpec& st = setup.stock;
+  auto need = [&](bool ok, const std::string& what) {
+    if (!ok) throw SetupError("stock: a lathe stock needs " + what, "stock", st.line);
+  };
+  need(st.diameter > 0, "a diameter");
+  need(st.length > 0, "a length");
+  need(st.boreDiameter < st.diameter, "a bore_diameter below its diameter");
+  need(st.frame == "work", "frame = \"work\" (the coordinates of the program)");
+  unit_ = setup.initialUnit == InputUnit::Inch ? 1 / 25.4 : 1.0;
+  tol_ = setup.target.tolerance > 0 ? setup.target.tolerance : (unit_ < 1 ? 0.0004 : 0.01);
+  chord_ = tol_ / 20;
+  rIn_ = st.boreDiameter / 2;
+  rOut_ = st.diameter / 2;
+  zFront_ = st.frontZ;
+  zBack_ = st.frontZ - st.length;
+  // Tiles about 1 mm wide (at most 4096 of them): a short move touches one or two.
+  double w = std::max(unit_, st.length / 4096);
+  size_t n = static_cast<size_t>(std::ceil(st.length / w));
+  tileW_ = toInt(w);
+  tileZ0_ = toInt(zBack_);
+  tiles_.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    cInt z0 = tileZ0_ + static_cast<cInt>(k) * tileW_;
+    cInt z1 = std::min(z0 + tileW_, toInt(zFront_));
+    tiles_[k].paths = {
+        {{z0, toInt(rIn_)}, {z1, toInt(rIn_)}, {z1, toInt(rOut_)}, {z0, toInt(rOut_)}}};
+    refreshBounds(tiles_[k]);
+  }
+  selectTool(ToolSpec{"insert"});
+  if (setup.target.present) {
+    if (!setup.target.polyline.empty())
+      loadTargetFile();
+    else if (setup.target.fromN < 0)
+      throw SetupError("target: a lathe target needs blocks = \"N..N\" or polyline = FILE",
+                       "target", setup.target.line);
+    else
+      targetSource_ = fmt::format("blocks N{}..N{}", setup.target.fromN, setup.target.toN);
+  }
+}
+
+void LatheStock::refreshBounds(Tile& t) {
+  t.empty = true;
+  cInt zmin = 0, zmax = 0, rmin = 0, rmax = 0;
+  for (const auto& p : t.paths)
+    for (const auto& q : p) {
+      if (t.empty) zmin = zmax = q.X, rmin = rmax = q.Y, t.empty = false;
+      zmin = std::min(zmin, q.X), zmax = std::max(zmax, q.X);
+      rmin = std::min(rmin, q.Y), rmax = std::max(rmax, q.Y);
+    }
+  t.zmin = zmin, t.zmax = zmax, t.rmin = rmin, t.rmax = rmax;
+}
+
+void LatheStock::selectTool(const ToolSpec& tool) {
+  outline_ = lsim::toolOutline(tool, chord_, 10 * unit_);
+}
+
+void LatheStock::onTool(const ToolEvent& e) {
+  // The physical tool: [tools.T] by the turret number (T0101 -> 1) or by the whole T word
+  // (101); without one, the nose radius and tip of the offset row of the same number.
+  ToolSpec spec{"insert"};
+  std::string source = "none";
+  for (const auto& [t, ts] : setup_.tools) {
+    if (t == e.tool || (t >= 100 && t / 100 == e.tool)) {
+      spec = ts;
+      source = "tools";
+      break;
+    }
+  }
+  if (source == "none") {
+    auto it = setup_.toolOffsets.find(e.tool);
+    if (it != setup_.toolOffsets.end()) {
+      spec.noseRadius = it->second.geometry[kFieldRorD];
+      spec.tip = it->second.tip;
+      source = "offsets";
+    }
+  }
+  if (source == "none")
+    notes_.push_back(fmt::format(
+        "T{}: no [tools] entry and no offset row: simulated as a sharp tip-0 insert", e.tool));
+  selectTool(spec);
+  toolKnown_ = true;
+  tools_.push_back({{"t", e.tool},
+                    {"type", spec.type},
+                    {"nose_radius", spec.noseRadius},
+                    {"tip", spec.tip},
+                    {"diameter", spec.diameter},
+                    {"source", source}});
+}
+
+double LatheStock::area() const {
+  double a = 0;
+  for (const auto& t : tiles_) a += pathsArea(t.paths);
+  return a;
+}
+
+ClipperLib::Paths LatheStock::profile() const {
+  ClipperLib::Clipper c;
+  for (const auto& t : tiles_) c.AddPaths(t.paths, ClipperLib::ptSubject, true);
+  ClipperLib::Paths out;
+  c.Execute(ClipperLib::ctUnion, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
+// Removes poly from the tiles it overlaps; returns the area removed.
+double LatheStock::cutPolygon(const ClipperLib::Path& poly, cInt zlo, cInt zhi) {
+  cInt rlo = poly.front().Y, rhi = rlo;
+  for (const auto& q : poly) rlo = std::min(rlo, q.Y), rhi = std::max(rhi, q.Y);
+  if (tiles_.empty() || zhi < tileZ0_) return 0;
+  long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
+  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                             static_cast<long>((zhi - tileZ0_) / tileW_));
+  double removed = 0;
+  for (long k = first; k <= last; ++k) {
+    Tile& t = tiles_[static_cast<size_t>(k)];
+    if (t.empty || t.zmax <= zlo || t.zmin >= zhi || t.rmax <= rlo || t.rmin >= rhi) continue;
+    double before = pathsArea(t.paths);
+    clipper_.Clear();
+    clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
+    clipper_.AddPath(poly, ClipperLib::ptClip, true);
+    ClipperLib::Paths out;
+    clipper_.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    double after = pathsArea(out);
+    if (before - after <= 0) continue;  // touched the bounds only
+    t.paths = std::move(out);
+    refreshBounds(t);
+    removed += before - after;
+  }
+  return removed;
+}
+
+double LatheStock::cutLine(Pt a, Pt b) {
+  std::vector<Pt> hull = lsim::sweptHull(outline_, a, b);
+  ClipperLib::Path poly = toPath(hull);
+  cInt zlo = poly.front().X, zhi = zlo;
+  for (const auto& q : poly) zlo = std::min(zlo, q.X), zhi = std::max(zhi, q.X);
+  double removed = cutPolygon(poly, zlo, zhi);
+  // Past the spindle axis the tool cuts the other side of the part: the mirror image.
+  bool below =
+      std::any_of(poly.begin(), poly.end(), [](const ClipperLib::IntPoint& q) { return q.Y < 0; });
+  if (below) {
+    for (auto& q : poly) q.Y = -q.Y;
+    std::reverse(poly.begin(), poly.end());
+    removed += cutPolygon(poly, zlo, zhi);
+  }
+  return removed;
+}
+
+void LatheStock::cutPath(const std::vector<Pt>& pts, const MoveEvent& e) {
+  double removed = 0;
+  for (size_t k = 1; k < pts.size(); ++k) removed += cutLine(pts[k - 1], pts[k]);
+  removed_ += removed;
+  if (removed > 0) ++cuttingMoves_;
+  // A rapid that removes material is a crash. Rounding of the polygon can graze the
+  // profile the previous feed move left: far below any real contact, so it does not count.
+  double grazing = tol_ * tol_;
+  if (e.mode == MoveMode::Rapid && removed > grazing) {
+    collisions_.push_back({{"kind", "rapid"},
+                           {"program", e.at.programName ? *e.at.programName : std::string()},
+                           {"line", e.at.line},
+                           {"n", e.at.n},
+                           {"amount", removed}});
+  }
+}
+
+void LatheStock::onMove(const MoveEvent& e) {
+  ++moves_;
+  auto rz = [](const AxisArray& a) { return Pt{a[0] / 2, a[2]}; };
+  std::vector<Pt> pts{rz(e.start)};
+  if (e.arc) {
+    // In the (z, r) plane (Z right, X up) G02 runs clockwise.
+    Pt c{e.center[0] / 2, e.center[2]};
+    Pt s = rz(e.start), f = rz(e.end);
+    double a0 = std::atan2(s.r - c.r, s.z - c.z), a1 = std::atan2(f.r - c.r, f.z - c.z);
+    double R0 = std::hypot(s.r - c.r, s.z - c.z), R1 = std::hypot(f.r - c.r, f.z - c.z);
+    double sweep = a1 - a0;
+    bool cw = e.mode == MoveMode::Cw;
+    if (cw && sweep >= 0) sweep -= 2 * std::numbers::pi;
+    if (!cw && sweep <= 0) sweep += 2 * std::numbers::pi;
+    double R = std::max(R0, R1);
+    double step = R > chord_ ? 2 * std::acos(1 - chord_ / R) : std::numbers::pi / 2;
+    int n = std::max(1, static_cast<int>(std::ceil(std::fabs(sweep) / step)));
+    for (int k = 1; k < n; ++k) {
+      double t = static_cast<double>(k) / n, a = a0 + sweep * t, rad = R0 + (R1 - R0) * t;
+      pts.push_back({c.r + rad * std::sin(a), c.z + rad * std::cos(a)});
+    }
+  } else {
+    for (int k = 0; k < e.pathPoints; ++k) pts.push_back(rz(e.path[static_cast<size_t>(k)]));
+  }
+  pts.push_back(rz(e.end));
+  if (!toolKnown_ && moves_ == 1 && !setup_.tools.empty())
+    notes_.push_back("moves before the first T use a sharp insert");
+  cutPath(pts, e);
+  if (setup_.target.present && setup_.target.fromN >= 0) captureTarget(e, pts);
+}
+
+void LatheStock::captureTarget(const MoveEvent& e, const std::vector<Pt>& pts) {
+  // The programmed contour: under nose-radius compensation the move ends at the
+  // compensated point and programmedEnd is the programmed one; an arc keeps its centre.
+  Pt progEnd = e.compensated ? Pt{e.programmedEnd[0] / 2, e.programmedEnd[2]} : pts.back();
+  Pt progStart = havePos_ ? programmed_ : pts.front();
+  programmed_ = progEnd;
+  havePos_ = true;
+  if (captured_) return;
+  const TargetSpec& tg = setup_.target;
+  bool inRange = e.at.n >= tg.fromN && e.at.n <= tg.toN &&
+                 (!targetProgram_ || targetProgram_ == e.at.programName);
+  // Blocks without N inside the range belong to it.
+  if (capturing_ && e.at.n < 0 && targetProgram_ == e.at.programName) inRange = true;
+  if (!inRange) {
+    if (capturing_) captured_ = true;
+    return;
+  }
+  capturing_ = true;
+  targetProgram_ = e.at.programName;
+  if (e.mode == MoveMode::Rapid) return;
+  if (!e.compensated) {
+    for (size_t k = 1; k < pts.size(); ++k) target_.push_back({pts[k - 1], pts[k], e.at.n});
+    return;
+  }
+  if (!e.arc) {
+    target_.push_back({progStart, progEnd, e.at.n});
+    return;
+  }
+  Pt c{e.center[0] / 2, e.center[2]};
+  double a0 = std::atan2(progStart.r - c.r, progStart.z - c.z),
+         a1 = std::atan2(progEnd.r - c.r, progEnd.z - c.z);
+  double R = std::hypot(progEnd.r - c.r, progEnd.z - c.z), sweep = a1 - a0;
+  if (e.mode == MoveMode::Cw && sweep >= 0) sweep -= 2 * std::numbers::pi;
+  if (e.mode == MoveMode::Ccw && sweep <= 0) sweep += 2 * std::numbers::pi;
+  int n = std::max(1, static_cast<int>(std::ceil(std::fabs(sweep) * R / tol_)));
+  Pt prev = progStart;
+  for (int k = 1; k <= n; ++k) {
+    double a = a0 + sweep * k / n;
+    Pt p = k == n ? progEnd : Pt{c.r + R * std::sin(a), c.z + R * std::cos(a)};
+    target_.push_back({prev, p, e.at.n});
+    prev = p;
+  }
+}
+
+void LatheStock::loadTargetFile() {
+  const std::string& path = setup_.target.polyline;
+  std::ifstream in(path);
+  if (!in)
+    throw SetupError("target.polyline: cannot read " + path, "target.polyline", setup_.target.line);
+  std::string line;
+  int lineNo = 0;
+  std::vector<Pt> pts;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    auto hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream ss(line);
+    double x = 0, z = 0;
+    if (!(ss >> x)) continue;  // blank or comment line
+    std::string rest;
+    if (!(ss >> z) || (ss >> rest))
+      throw SetupError(
+          fmt::format("target.polyline: {}:{}: expected X (diameter) and Z", path, lineNo),
+          "target.polyline", setup_.target.line);
+    pts.push_back({x / 2, z});
+  }
+  if (pts.size() < 2)
+    throw SetupError("target.polyline: " + path + " needs at least two points", "target.polyline",
+                     setup_.target.line);
+  for (size_t k = 1; k < pts.size(); ++k) target_.push_back({pts[k - 1], pts[k], -1});
+  captured_ = true;
+  targetSource_ = "polyline " + path;
+}
+
+}  // namespace ncvm

@@ -1,0 +1,85 @@
+#pragma once
+// The lathe stock: an exact half-profile (r >= 0, z) of the solid of revolution, kept as
+// integer polygons (Clipper, 1e-6 program units) split into tiles along Z so a move only
+// clips the few tiles its swept area touches. Each move removes the area the tool outline
+// sweeps (sim/lathe_insert.hpp); arcs are followed in chords whose sagitta stays below a
+// fraction of the tolerance.
+#include <map>
+#include <polyclipping/clipper.hpp>
+#include <string>
+#include <vector>
+
+#include "sim/deviation.hpp"
+#include "sim/lathe_insert.hpp"
+#include "sim/stock_model.hpp"
+
+namespace ncvm {
+
+class LatheStock final : public StockModel {
+ public:
+  // Throws SetupError when the stock is not a bar or tube.
+  explicit LatheStock(const Setup& setup);
+
+  void onMove(const MoveEvent& e) override;
+  void onTool(const ToolEvent& e) override;
+  nlohmann::json finish(const std::string& outDir) override;
+
+  // The pieces, for tests and benchmarks. Points are (radius, z) of the programmed point.
+  void selectTool(const ToolSpec& tool);
+  // Removes the area swept from a to b; returns the area removed (program units^2).
+  double cutLine(lsim::Pt a, lsim::Pt b);
+  double area() const;
+  ClipperLib::Paths profile() const;     // the tiles merged: outer rings and holes
+  static constexpr double kScale = 1e6;  // integer units per program unit
+
+ private:
+  struct Tile {
+    ClipperLib::Paths paths;
+    ClipperLib::cInt zmin = 0, zmax = 0, rmin = 0, rmax = 0;  // bounds of the material
+    bool empty = false;
+  };
+  struct TargetSeg {
+    lsim::Pt a, b;
+    int n = -1;
+  };
+  struct Sample {
+    lsim::Pt p;
+    double d = 0;
+    int n = -1;
+  };
+
+  double cutPolygon(const ClipperLib::Path& poly, ClipperLib::cInt zlo, ClipperLib::cInt zhi);
+  void refreshBounds(Tile& t);
+  void cutPath(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
+  void captureTarget(const MoveEvent& e, const std::vector<lsim::Pt>& pts);
+  void loadTargetFile();
+  std::vector<Sample> measure(const ClipperLib::Paths& final) const;
+  nlohmann::json writeOutputs(const std::string& dir, const ClipperLib::Paths& final,
+                              const std::vector<Sample>& samples, nlohmann::json& analysis) const;
+
+  const Setup& setup_;
+  double unit_ = 1;  // 1 mm in program units (1/25.4 in an inch setup)
+  double tol_ = 0.01, chord_ = 0.0005;
+  double rIn_ = 0, rOut_ = 0, zFront_ = 0, zBack_ = 0;
+  double tileWidth_ = 1;
+  ClipperLib::cInt tileZ0_ = 0, tileW_ = 1;
+  std::vector<Tile> tiles_;
+  ClipperLib::Clipper clipper_;
+  std::vector<lsim::Pt> outline_;
+  nlohmann::json tools_ = nlohmann::json::array();
+  std::vector<std::string> notes_;
+  bool toolKnown_ = false;
+  // Statistics.
+  uint64_t moves_ = 0, cuttingMoves_ = 0;
+  double removed_ = 0;
+  nlohmann::json collisions_ = nlohmann::json::array();
+  // Target from blocks: the feed moves of the range, first pass only.
+  std::vector<TargetSeg> target_;
+  bool capturing_ = false, captured_ = false;
+  const std::string* targetProgram_ = nullptr;
+  lsim::Pt programmed_{};  // last programmed point (cutter compensation gives it apart)
+  bool havePos_ = false;
+  std::string targetSource_;
+};
+
+}  // namespace ncvm

@@ -1,0 +1,126 @@
+#include "sim/stock_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sim/lathe_insert.hpp"
+#include "sim/lathe_stock.hpp"
+
+using namespace ncvm;
+using lsim::Pt;
+
+namespace {
+ncvm::Setup latheBar(double diameter, double length) {
+  ncvm::Setup s = defaultSetup(MachineKind::Lathe);
+  s.stock.present = true;
+  s.stock.diameter = diameter;
+  s.stock.length = length;
+  return s;
+}
+double polygonArea(const std::vector<Pt>& p) {
+  double a = 0;
+  for (size_t k = 0; k < p.size(); ++k) {
+    const Pt &u = p[k], &v = p[(k + 1) % p.size()];
+    a += u.z * v.r - v.z * u.r;
+  }
+  return a / 2;
+}
+}  // namespace
+
+TEST(StockModel, FactoryNeedsAStockSection) {
+  ncvm::Setup s = defaultSetup(MachineKind::Lathe);
+  EXPECT_THROW(makeStockModel(s), SetupError);
+}
+
+TEST(StockModel, MillStockNeedsABlock) {
+  ncvm::Setup s = defaultSetup(MachineKind::Mill);
+  s.stock.present = true;
+  EXPECT_THROW(makeStockModel(s), SetupError);  // no min/max
+  s.stock.min = {0, 0, -10};
+  s.stock.max = {50, 50, -10};
+  EXPECT_THROW(makeStockModel(s), SetupError);  // flat in Z
+  s.stock.max = {50, 50, 0};
+  EXPECT_NE(makeStockModel(s), nullptr);
+  s.stock.frame = "machine";
+  EXPECT_THROW(makeStockModel(s), SetupError);
+  s.stock.frame = "work";
+  s.tools[3].type = "ball";  // no diameter
+  EXPECT_THROW(makeStockModel(s), SetupError);
+}
+
+TEST(StockModel, LatheStockNeedsADiameterAndLength) {
+  ncvm::Setup s = latheBar(0, 10);
+  EXPECT_THROW(makeStockModel(s), SetupError);
+  s = latheBar(10, 10);
+  s.stock.boreDiameter = 12;
+  EXPECT_THROW(makeStockModel(s), SetupError);
+  s = latheBar(10, 10);
+  s.target.present = true;  // neither blocks nor a polyline
+  EXPECT_THROW(makeStockModel(s), SetupError);
+}
+
+TEST(LatheInsert, NoseCentreLiesOppositeTheImaginaryTip) {
+  // Tip 3 (-X, -Z): the nose centre is (+r, +r) from the programmed point, so the outline
+  // touches r = 0 and z = 0 but never goes below either.
+  ToolSpec t{"insert"};
+  t.noseRadius = 0.8;
+  t.tip = 3;
+  auto o = lsim::toolOutline(t, 1e-4, 10);
+  double rmin = 1e9, zmin = 1e9;
+  for (const Pt& p : o) rmin = std::min(rmin, p.r), zmin = std::min(zmin, p.z);
+  EXPECT_NEAR(rmin, 0, 1e-4);
+  EXPECT_NEAR(zmin, 0, 1e-4);
+  // Tip 2 (+X, -Z), a boring bar: the centre is (-r, +r).
+  t.tip = 2;
+  o = lsim::toolOutline(t, 1e-4, 10);
+  double rmax = -1e9;
+  zmin = 1e9;
+  for (const Pt& p : o) rmax = std::max(rmax, p.r), zmin = std::min(zmin, p.z);
+  EXPECT_NEAR(rmax, 0, 1e-4);
+  EXPECT_NEAR(zmin, 0, 1e-4);
+}
+
+TEST(LatheInsert, SweptHullOfASquareIsItsMinkowskiSum) {
+  std::vector<Pt> square{{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+  auto h = lsim::sweptHull(square, {0, 0}, {0, 3});
+  EXPECT_NEAR(std::fabs(polygonArea(h)), 4.0, 1e-12);  // 1 x 4
+  h = lsim::sweptHull(square, {0, 0}, {2, 2});
+  EXPECT_NEAR(std::fabs(polygonArea(h)), 1 + 2 * 2, 1e-12);  // square + two parallelograms
+}
+
+TEST(LatheStock, AGroovePlungeRemovesItsRectangle) {
+  // A drill-like flat tool of diameter 2 (r from -1 to 1 about the programmed point):
+  // plunging from r 30 to r 20 at z -10 removes a 2 x 10 rectangle of the half-profile.
+  ncvm::Setup s = latheBar(60, 40);
+  LatheStock st(s);
+  ToolSpec flat{"flat"};
+  flat.diameter = 2;
+  flat.fluteLength = 50;
+  st.selectTool(flat);
+  double before = st.area();
+  EXPECT_NEAR(before, 30 * 40, 1e-9);
+  // The flat tool's body runs along +Z from its end: turned sideways it is a 2 wide bar.
+  double removed = st.cutLine({35, -10}, {20, -10});
+  // Removed: r 20..30 (the stock ends at 30), z -10 .. 0 (body up to the front face), and
+  // the tool is 2 wide in r: the swept area is r in [19, 36] x z in [-10, 40] clipped by
+  // the bar r in [0, 30] x z in [-40, 0]: 11 x 10.
+  EXPECT_NEAR(removed, 11 * 10, 1e-6);
+  EXPECT_NEAR(st.area(), before - removed, 1e-6);
+  // Cutting the same place again removes nothing.
+  EXPECT_NEAR(st.cutLine({35, -10}, {20, -10}), 0, 1e-9);
+}
+
+TEST(LatheStock, FacingPastTheAxisCutsTheWholeFace) {
+  // A sharp tip-3 insert facing from X+ to X-2 (r -1) at z -1: the whole face layer goes,
+  // the part of the sweep past the axis mirrored onto the material near r = 0.
+  ncvm::Setup s = latheBar(20, 30);
+  LatheStock st(s);
+  ToolSpec t{"insert"};
+  t.tip = 3;
+  st.selectTool(t);
+  st.cutLine({12, -1}, {-1, -1});
+  // Everything at z > -1 is gone: the front face is now at z = -1.
+  EXPECT_NEAR(st.area(), 10 * 29, 1e-6);
+}
