@@ -7,7 +7,7 @@
 
 namespace ncvm {
 
-std::string encodeStl(const HeightField& f, int maxSamples = 800);
-void writeStl(const std::string& path, const HeightField& f, int maxSamples = 800);
+std::string encodeStl(const HeightField& f, int maxSamples = 300);
+void writeStl(const std::string& path, const HeightField& f, int maxSamples = 300);
 
 }  // namespace ncvm
