@@ -57,10 +57,16 @@ void MillSim::run(int index, std::vector<float>& pen) {
     const MillTool& t = *op.tool;
     // Shank and holder against the stock as the move finds it (before it cuts). A rapid's
     // cutter contact is already a collision, so only feed moves check the shank.
-    if (!op.rapid && t.fluteLength > 0)
-      pen[3 * k + 1] = holderPenetration(field_, t.radius, t.fluteLength, op.a, op.b, s);
-    if (t.holderRadius > 0)
-      pen[3 * k + 2] = holderPenetration(field_, t.holderRadius, t.holderZ, op.a, op.b, s);
+    // Arcs: the flat-bottomed cylinder swept along the same arc, measured only.
+    auto part = [&](double r, double lift) {
+      if (!op.arc) return holderPenetration(field_, r, lift, op.a, op.b, s);
+      MillTool cyl;
+      cyl.radius = r;
+      return sweepArcXY(field_, cyl, op.cx, op.cy, op.radius, op.a0, op.sweep, op.a[2] + lift, s,
+                        SweepMode::Measure);
+    };
+    if (!op.rapid && t.fluteLength > 0) pen[3 * k + 1] = part(t.radius, t.fluteLength);
+    if (t.holderRadius > 0) pen[3 * k + 2] = part(t.holderRadius, t.holderZ);
     float cut = op.arc ? sweepArcXY(field_, t, op.cx, op.cy, op.radius, op.a0, op.sweep, op.a[2], s)
                        : sweepLine(field_, t, op.a, op.b, s);
     pen[3 * k] = cut;

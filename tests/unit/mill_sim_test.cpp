@@ -162,14 +162,17 @@ TEST(MillSim, HolderAndShankContacts) {
   EXPECT_DOUBLE_EQ(t.holderZ, 20);
   MillSim s(HeightField(0, 0, 0.1, 500, 500, 0.0f), 1);
   s.setTool(&t);
-  s.line({10, 10, -4}, {40, 10, -4}, false, 1);  // flutes deep enough: fine
-  s.line({10, 20, -8}, {40, 20, -8}, false, 2);  // 3 mm of shank in the material
-  s.line({5, 45, -25}, {5, 45, -25}, false, 3);  // plunge 25 deep: holder 5 mm into the stock
+  s.line({10, 10, -4}, {40, 10, -4}, false, 1);   // flutes deep enough: fine
+  s.line({10, 20, -8}, {40, 20, -8}, false, 2);   // 3 mm of shank in the material
+  s.line({5, 45, -25}, {5, 45, -25}, false, 3);   // plunge 25 deep: holder 5 mm into the stock
+  s.arcXY(25, 40, 5, 0, M_PI, -7, -7, false, 4);  // half circle 2 mm of shank deep
   std::map<std::pair<uint32_t, int>, float> got;
   for (const auto& c : s.contacts()) got[{c.tag, c.kind}] = c.depth;
   EXPECT_EQ(got.count({1, MillContact::Shank}), 0u);
   float shank = got[{2, MillContact::Shank}], holder = got[{3, MillContact::Holder}];
   EXPECT_NEAR(shank, 3, 1e-5);
+  float arcShank = got[{4, MillContact::Shank}];
+  EXPECT_NEAR(arcShank, 2, 1e-5);
   EXPECT_NEAR(holder, 5, 1e-5);
 }
 
