@@ -11,6 +11,7 @@
 
 #include "app/machine_state.hpp"
 #include "app/session.hpp"
+#include "app/sweep.hpp"
 #include "core/alarm.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
@@ -175,6 +176,32 @@ int checkCommand(const CommonOptions& o, bool json) {
   return report["alarms"].empty() ? kExitOk : kExitAlarm;
 }
 
+// ncvm sweep: the program over every combination of --vary values, with the stock analysis.
+int sweepCommand(const CommonOptions& o, const std::vector<std::string>& varies,
+                 const std::string& outRoot, bool csv) {
+  std::vector<SweepAxis> axes;
+  for (const auto& v : varies) axes.push_back(parseSweepAxis(v));
+  Setup base = makeSetup(o);
+  if (!base.stock.present)
+    throw SetupError("sweep tabulates the stock analysis: the setup needs a [stock] section",
+                     "stock");
+  auto rows = runSweep(base, axes, outRoot, [&](const Setup& s, const std::string& dir) {
+    Session session(s);
+    loadPrograms(session, o);
+    session.simulateStock(dir);
+    Session::Result r = session.run(nullptr);
+    SweepRow row;
+    row.end = endReasonName(r.end);
+    if (r.alarm) row.alarm = fmt::format("{} {}", r.alarm->code, r.alarm->text);
+    row.stock = r.stock;
+    return row;
+  });
+  std::string table = csv ? sweepCsv(axes, rows) : sweepMarkdown(axes, rows);
+  if (!outRoot.empty()) writeFileAtomic(outRoot + (csv ? "/sweep.csv" : "/sweep.md"), table);
+  fmt::print("{}", table);
+  return kExitOk;
+}
+
 void printAlarmTable() {
   fmt::print("| code | message | meaning |\n|---|---|---|\n");
   for (const auto& a : alarmTable()) fmt::print("| {} | {} | {} |\n", alarmCode(a.id), a.message, a.meaning);
@@ -223,6 +250,23 @@ int main(int argc, char** argv) {
   addCommon(check, checkOpts);
   check->add_flag("--json", json, "print the findings as JSON");
 
+  CommonOptions sweepOpts;
+  std::vector<std::string> varies;
+  std::string sweepOut;
+  bool sweepCsvOut = false;
+  auto* sweep = app.add_subcommand(
+      "sweep", "run one program over a range of setup values and tabulate the stock analysis");
+  addCommon(sweep, sweepOpts);
+  sweep
+      ->add_option("--vary", varies,
+                   "KEY=FROM:TO:STEP or KEY=V1,V2,... (any --set key, e.g. "
+                   "tool_offsets.52.d_geometry=10:30:5, tools.1.diameter=50,63,80, "
+                   "vars.#500=1,2); repeatable: every combination runs")
+      ->required();
+  sweep->add_option("--out", sweepOut,
+                    "write each run's stock files into DIR/KEY=VALUE_... and the table into DIR");
+  sweep->add_flag("--csv", sweepCsvOut, "print CSV instead of a Markdown table");
+
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
@@ -239,6 +283,7 @@ int main(int argc, char** argv) {
   try {
     if (run->parsed()) return runCommand(runOpts, outs, quiet);
     if (check->parsed()) return checkCommand(checkOpts, json);
+    if (sweep->parsed()) return sweepCommand(sweepOpts, varies, sweepOut, sweepCsvOut);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();
     return kExitOk;

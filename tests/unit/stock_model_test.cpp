@@ -34,15 +34,20 @@ TEST(StockModel, FactoryNeedsAStockSection) {
   EXPECT_THROW(makeStockModel(s), SetupError);
 }
 
-TEST(StockModel, MillIsNotAvailableYet) {
+TEST(StockModel, MillStockNeedsABlock) {
   ncvm::Setup s = defaultSetup(MachineKind::Mill);
   s.stock.present = true;
-  try {
-    makeStockModel(s);
-    FAIL();
-  } catch (const SetupError& e) {
-    EXPECT_NE(std::string(e.what()).find("mill stock simulation not available"), std::string::npos);
-  }
+  EXPECT_THROW(makeStockModel(s), SetupError);  // no min/max
+  s.stock.min = {0, 0, -10};
+  s.stock.max = {50, 50, -10};
+  EXPECT_THROW(makeStockModel(s), SetupError);  // flat in Z
+  s.stock.max = {50, 50, 0};
+  EXPECT_NE(makeStockModel(s), nullptr);
+  s.stock.frame = "machine";
+  EXPECT_THROW(makeStockModel(s), SetupError);
+  s.stock.frame = "work";
+  s.tools[3].type = "ball";  // no diameter
+  EXPECT_THROW(makeStockModel(s), SetupError);
 }
 
 TEST(StockModel, LatheStockNeedsADiameterAndLength) {

@@ -1,0 +1,269 @@
+#include "sim/mill_stock.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "report/atomic_file.hpp"
+#include "report/mill_pictures.hpp"
+#include "report/stl_writer.hpp"
+#include "sim/heightfield_io.hpp"
+
+namespace ncvm {
+
+std::unique_ptr<StockModel> makeMillStock(const Setup& setup) {
+  return std::make_unique<MillStock>(setup);
+}
+
+namespace {
+// Default resolution 0.05 mm, coarser when the block would need more than this many cells.
+constexpr double kMaxDefaultCells = 25e6;
+}  // namespace
+
+MillStock::MillStock(const Setup& setup) : setup_(setup) {
+  const StockSpec& st = setup.stock;
+  auto bad = [&](const std::string& what) { throw SetupError("stock: " + what, "stock", st.line); };
+  if (st.min.size() != 3 || st.max.size() != 3)
+    bad("a mill stock needs min = [x, y, z] and max = [x, y, z]");
+  for (int k = 0; k < 3; ++k)
+    if (!(st.max[static_cast<size_t>(k)] > st.min[static_cast<size_t>(k)]))
+      bad("max must exceed min on every axis");
+  if (st.frame != "work")
+    bad("a mill stock takes frame = \"work\" (the coordinates the moves are reported in)");
+  unit_ = setup.initialUnit == InputUnit::Inch ? 1 / 25.4 : 1.0;
+  tol_ = setup.target.tolerance > 0 ? setup.target.tolerance : 0.01 * unit_;
+  const double w = st.max[0] - st.min[0], h = st.max[1] - st.min[1];
+  if (st.cell > 0) {
+    cell_ = st.cell;
+  } else {
+    cell_ = 0.05 * unit_;
+    if (w * h / (cell_ * cell_) > kMaxDefaultCells) {
+      cell_ = std::sqrt(w * h / kMaxDefaultCells);
+      notes_.push_back(
+          fmt::format("cell {:.4g} (the default 0.05 mm would need more than {:.0f} "
+                      "million cells; give stock.cell)",
+                      cell_, kMaxDefaultCells / 1e6));
+    }
+  }
+  try {
+    HeightField f = HeightField::covering(st.min[0], st.min[1], st.max[0], st.max[1], cell_,
+                                          static_cast<float>(st.max[2]));
+    f.setBottom(static_cast<float>(st.min[2]));
+    sim_ = std::make_unique<MillSim>(std::move(f));
+  } catch (const std::invalid_argument& e) {
+    bad(std::string(e.what()));
+  }
+  for (const auto& [t, spec] : setup.tools) {
+    if (spec.type == "probe" || spec.type == "insert") continue;  // they do not cut here
+    try {
+      tools_[t] = millToolFromSpec(spec, t);
+    } catch (const ToolError& e) {
+      throw SetupError(e.what(), fmt::format("tools.{}", t));
+    }
+  }
+  const TargetSpec& tg = setup.target;
+  if (tg.present) {
+    MillTarget target;
+    target.tolerance = tol_;
+    if (tg.faceZ) {
+      target.z = *tg.faceZ;
+    } else if (!tg.heightMap.empty()) {
+      try {
+        targetField_ = loadHeightMap(tg.heightMap);
+      } catch (const std::exception& e) {
+        throw SetupError(std::string("target: ") + e.what(), "target.height_map", tg.line);
+      }
+      target.field = &*targetField_;
+    } else {
+      throw SetupError("target: a mill target needs face_z = Z or height_map = FILE", "target",
+                       tg.line);
+    }
+    target_ = target;
+  }
+}
+
+void MillStock::select(int t) {
+  if (sim_->tool() && t == current_) return;  // T1 M06 with T1 already in: nothing new
+  current_ = t;
+  auto it = tools_.find(t);
+  const MillTool* tool = it == tools_.end() ? nullptr : &it->second;
+  sim_->setTool(tool);
+  nlohmann::json entry = {{"t", t}};
+  auto spec = setup_.tools.find(t);
+  if (spec != setup_.tools.end()) {
+    entry["type"] = spec->second.type;
+    entry["diameter"] = spec->second.diameter;
+    entry["corner_radius"] = spec->second.cornerRadius;
+    entry["source"] = "tools";
+  } else {
+    entry["source"] = "none";
+  }
+  if (!tool)
+    notes_.push_back(spec == setup_.tools.end()
+                         ? fmt::format("T{}: no [tools.{}] entry: its moves remove nothing", t, t)
+                         : fmt::format("T{}: a {} does not cut: its moves remove nothing", t,
+                                       spec->second.type));
+  toolsUsed_.push_back(entry);
+}
+
+void MillStock::onTool(const ToolEvent& e) {
+  // The tool in the spindle is the one of the last M06; before any M06 (machines without a
+  // changer, programs that leave it out) the last T word.
+  if (e.change) {
+    changed_ = true;
+    select(e.tool);
+  } else if (!changed_) {
+    select(e.tool);
+  }
+  selected_ = e.tool;
+}
+
+uint32_t MillStock::tag(const MoveEvent& e) {
+  origins_.push_back(e.at);
+  return static_cast<uint32_t>(origins_.size() - 1);
+}
+
+void MillStock::onMove(const MoveEvent& e) {
+  ++moves_;
+  if (moves_ == 1 && !sim_->tool() && selected_ < 0)
+    notes_.push_back("moves before the first T word remove nothing (no tool)");
+  if (!sim_->tool()) return;
+  const bool rapid = e.mode == MoveMode::Rapid;
+  uint32_t t = tag(e);
+  auto p = [](const AxisArray& a) { return Point3{a[0], a[1], a[2]}; };
+  if (e.arc) return arc(e, t);
+  Point3 prev = p(e.start);
+  for (int k = 0; k < e.pathPoints; ++k) {
+    Point3 next = p(e.path[static_cast<size_t>(k)]);
+    sim_->line(prev, next, rapid, t);
+    prev = next;
+  }
+  sim_->line(prev, p(e.end), rapid, t);
+}
+
+void MillStock::arc(const MoveEvent& e, uint32_t t) {
+  // (u, v) the arc's plane, w its normal, each a right-handed cyclic order of X Y Z:
+  // G17 (X, Y, Z), G18 (Z, X, Y), G19 (Y, Z, X), so G03 is counter-clockwise in (u, v).
+  const int pu = e.plane == 18 ? 2 : e.plane == 19 ? 1 : 0;
+  const int pv = e.plane == 18 ? 0 : e.plane == 19 ? 2 : 1;
+  const int pw = 3 - pu - pv;
+  auto at = [](const AxisArray& a, int k) { return a[static_cast<size_t>(k)]; };
+  const double cu = e.center[static_cast<size_t>(pu)], cv = e.center[static_cast<size_t>(pv)];
+  const double su = at(e.start, pu) - cu, sv = at(e.start, pv) - cv;
+  const double eu = at(e.end, pu) - cu, ev = at(e.end, pv) - cv;
+  const double r0 = std::hypot(su, sv), r1 = std::hypot(eu, ev);
+  const double a0 = std::atan2(sv, su);
+  double sweep = std::atan2(ev, eu) - a0;
+  const double tau = 2 * std::numbers::pi;
+  if (e.mode == MoveMode::Ccw) {
+    while (sweep <= 1e-12) sweep += tau;  // end = start: a full circle
+  } else {
+    while (sweep >= -1e-12) sweep -= tau;
+  }
+  const bool rapid = e.mode == MoveMode::Rapid;
+  if (e.plane == 17 && std::abs(r1 - r0) <= 1e-9 * std::max(1.0, r0)) {
+    sim_->arcXY(cu, cv, r0, a0, sweep, e.start[2], e.end[2], rapid, t);
+    return;
+  }
+  // Other planes (and spirals): chords within the helix tolerance.
+  const double r = std::max(r0, r1);
+  double step = r > sim_->chordTol ? 2 * std::acos(1 - sim_->chordTol / r) : std::numbers::pi / 2;
+  int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / step)));
+  Point3 prev{e.start[0], e.start[1], e.start[2]};
+  for (int k = 1; k <= n; ++k) {
+    double u = static_cast<double>(k) / n, ang = a0 + sweep * u, rad = r0 + (r1 - r0) * u;
+    Point3 next{};
+    next[static_cast<size_t>(pu)] = cu + rad * std::cos(ang);
+    next[static_cast<size_t>(pv)] = cv + rad * std::sin(ang);
+    next[static_cast<size_t>(pw)] = at(e.start, pw) + u * (at(e.end, pw) - at(e.start, pw));
+    if (k == n) next = {e.end[0], e.end[1], e.end[2]};
+    sim_->line(prev, next, rapid, t);
+    prev = next;
+  }
+}
+
+nlohmann::json MillStock::finish(const std::string& outDir) {
+  return analysis(outDir);
+}
+
+nlohmann::json MillStock::analysis(const std::string& outDir) {
+  const HeightField& f = sim_->field();
+  const StockSpec& st = setup_.stock;
+  nlohmann::json j;
+  j["kind"] = "mill";
+  j["units"] = unit_ < 1 ? "inch" : "mm";
+  j["stock"] = {{"min", st.min},          {"max", st.max}, {"cell", cell_},
+                {"nx", f.nx()},           {"ny", f.ny()},  {"bytes_per_cell", sizeof(float)},
+                {"model", "height field"}};
+  j["moves"] = moves_;
+  j["cutting_moves"] = sim_->cuttingMoves();
+  j["threads"] = sim_->threads();
+  // One entry per move and kind: the deepest contact of its chords.
+  nlohmann::json collisions = nlohmann::json::array();
+  std::map<std::pair<uint32_t, int>, float> deepest;
+  for (const auto& c : sim_->contacts()) {
+    auto& d = deepest[{c.tag, static_cast<int>(c.kind)}];
+    d = std::max(d, c.depth);
+  }
+  static const char* kinds[] = {"rapid", "shank", "holder"};
+  for (const auto& [key, depth] : deepest) {
+    const EventOrigin& o = origins_[key.first];
+    collisions.push_back({{"kind", kinds[key.second]},
+                          {"program", o.programName ? *o.programName : std::string()},
+                          {"line", o.line},
+                          {"n", o.n},
+                          {"amount", depth}});
+  }
+  j["collisions"] = collisions;
+  j["tools"] = toolsUsed_;
+  j["notes"] = notes_;
+  j["target"] = nullptr;
+  j["deviation"] = nullptr;
+  j["uncut"] = nullptr;
+  if (target_) {
+    const auto& tg = setup_.target;
+    j["target"] = tg.faceZ ? nlohmann::json{{"source", "face_z"}, {"z", *tg.faceZ}}
+                           : nlohmann::json{{"source", "height_map"}, {"file", tg.heightMap}};
+    MillAnalysis a = analyseMill(f, *target_);
+    j["deviation"] = a.toJson();
+    nlohmann::json regions = nlohmann::json::array();
+    for (const auto& r : uncutRegions(f, *target_))
+      regions.push_back({{"xmin", r.xmin},
+                         {"xmax", r.xmax},
+                         {"ymin", r.ymin},
+                         {"ymax", r.ymax},
+                         {"area", r.area}});
+    j["uncut"] = {
+        {"area", a.uncutArea()},
+        {"share", a.cells ? a.uncutArea() / (static_cast<double>(a.cells) * a.cellArea) : 0.0},
+        {"regions", regions}};
+  }
+  nlohmann::json pictures = nlohmann::json::array();
+  nlohmann::json files = nlohmann::json::object();
+  if (!outDir.empty()) {
+    std::filesystem::create_directories(outDir);
+    auto out = [&](const char* name) { return (std::filesystem::path(outDir) / name).string(); };
+    const MillTarget* tp = target_ ? &*target_ : nullptr;
+    writeFileAtomic(out("top_view.png"), encodePng(millTopView(f, tp)));
+    pictures.push_back({{"file", "top_view.png"}, {"title", "Top view (uncut red, gouge blue)"}});
+    if (tp) {
+      writeFileAtomic(out("deviation.png"), encodePng(millDeviationMap(f, *tp)));
+      pictures.push_back({{"file", "deviation.png"},
+                          {"title", "Deviation from the target (green within tolerance)"}});
+    }
+    writeFileAtomic(out("height_map.png"), encodePng(millHeightMap(f)));
+    pictures.push_back({{"file", "height_map.png"}, {"title", "Height map (white = top)"}});
+    writeStl(out("stock.stl"), f);
+    writeFileAtomic(out("stock.hmap"), encodeHeightMap(f));
+    files = {{"stl", "stock.stl"}, {"height_map", "stock.hmap"}};
+  }
+  j["pictures"] = pictures;
+  j["files"] = files;
+  if (!outDir.empty())
+    writeFileAtomic((std::filesystem::path(outDir) / "analysis.json").string(), j.dump(2) + "\n");
+  return j;
+}
+
+}  // namespace ncvm

@@ -1,0 +1,50 @@
+#pragma once
+// The mill stock model: the setup's [stock] block as a height field (sim/heightfield.hpp),
+// cut by every move with the physical tool of [tools.T] (sim/mill_sim.hpp), measured against
+// [target] (sim/mill_analysis.hpp) and drawn (report/mill_pictures.hpp, report/stl_writer.hpp).
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/mill_analysis.hpp"
+#include "sim/mill_sim.hpp"
+#include "sim/stock_model.hpp"
+
+namespace ncvm {
+
+class MillStock final : public StockModel {
+ public:
+  // Throws SetupError for an incomplete [stock], a bad [tools] entry or target file.
+  explicit MillStock(const Setup& setup);
+
+  void onMove(const MoveEvent& e) override;
+  void onTool(const ToolEvent& e) override;
+  nlohmann::json finish(const std::string& outDir) override;
+
+  MillSim& sim() { return *sim_; }
+  double cell() const { return cell_; }
+
+ private:
+  void select(int t);
+  uint32_t tag(const MoveEvent& e);
+  void arc(const MoveEvent& e, uint32_t tag);
+  nlohmann::json analysis(const std::string& outDir);
+
+  const Setup& setup_;
+  double unit_ = 1, cell_ = 0.05, tol_ = 0.01;
+  std::unique_ptr<MillSim> sim_;
+  std::map<int, MillTool> tools_;  // cutting tools of [tools], by T
+  std::optional<HeightField> targetField_;
+  std::optional<MillTarget> target_;
+  int selected_ = -1;  // last T word
+  int current_ = -1;   // tool in the spindle
+  bool changed_ = false;
+  nlohmann::json toolsUsed_ = nlohmann::json::array();
+  std::vector<std::string> notes_;
+  std::vector<EventOrigin> origins_;  // by tag
+  uint64_t moves_ = 0;
+};
+
+}  // namespace ncvm

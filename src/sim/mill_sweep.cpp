@@ -1,0 +1,347 @@
+#include "sim/mill_sweep.hpp"
+
+#include <cmath>
+#include <limits>
+
+// The inner loops are written as straight-line float code over one row so the compiler
+// vectorises them; the per-move entry points are compiled twice (AVX2 and baseline x86-64)
+// and picked at load time. No FMA: both versions give the same heights.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(__SANITIZE_ADDRESS__)
+#define NCVM_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define NCVM_CLONES
+#endif
+#define NCVM_INLINE __attribute__((always_inline)) inline
+
+namespace ncvm {
+namespace {
+
+constexpr float kNone = 3.0e38f;  // "the tool does not reach": finite, for -ffinite-math-only
+
+// Clips `lo <= k*x + m <= hi` into [xlo, xhi]; false when no x fits.
+bool clipLinear(double k, double m, double lo, double hi, double& xlo, double& xhi) {
+  if (std::abs(k) < 1e-15) return m >= lo && m <= hi;
+  double p = (lo - m) / k, q = (hi - m) / k;
+  if (p > q) std::swap(p, q);
+  xlo = std::max(xlo, p);
+  xhi = std::min(xhi, q);
+  return xlo <= xhi;
+}
+
+// The local x interval where the row at local y `ry` meets the stadium of radius r around
+// the segment (0,0)-(dx,dy): the discs at both ends and the band between them. The stadium
+// is convex, so the union is one interval.
+bool rowSpan(double ry, double dx, double dy, double r, double& lo, double& hi) {
+  lo = 1e300;  // no infinities: this file is built with -ffinite-math-only
+  hi = -lo;
+  auto disc = [&](double cx, double cy) {
+    double v = r * r - (ry - cy) * (ry - cy);
+    if (v < 0) return;
+    double w = std::sqrt(v);
+    lo = std::min(lo, cx - w);
+    hi = std::max(hi, cx + w);
+  };
+  disc(0, 0);
+  disc(dx, dy);
+  double len = std::hypot(dx, dy);
+  if (len > 0) {
+    double ux = dx / len, uy = dy / len;
+    double bl = -1e300, bh = 1e300;
+    if (clipLinear(ux, ry * uy, 0, len, bl, bh) && clipLinear(-uy, ry * ux, -r, r, bl, bh)) {
+      lo = std::min(lo, bl);
+      hi = std::max(hi, bh);
+    }
+  }
+  return lo <= hi;
+}
+
+// Runs `cell(rx, ry)` (local coordinates relative to the segment start; returns the tool's
+// lower envelope there, kNone where it does not reach) over the stadium's cells.
+template <SweepMode M, class CellFn>
+NCVM_INLINE float sweepStadium(HeightField& f, double ax, double ay, double dx, double dy, double r,
+                               Stripe stripe, CellFn cell) {
+  int jlo, jhi;
+  f.rowsWithin(std::min(ay, ay + dy) - r, std::max(ay, ay + dy) + r, jlo, jhi);
+  float pen = 0;
+  const auto step = static_cast<float>(f.cell());
+  for (int j = jlo; j < jhi; ++j) {
+    if (!stripe.owns(j)) continue;
+    double ry = f.cellY(j) - ay, lo, hi;
+    if (!rowSpan(ry, dx, dy, r, lo, hi)) continue;
+    int ilo, ihi;
+    f.columnsWithin(ax + lo, ax + hi, ilo, ihi);
+    if (ilo >= ihi) continue;
+    float* z = f.row(j) + ilo;
+    const auto rx0 = static_cast<float>(f.cellX(ilo) - ax);
+    const auto ryf = static_cast<float>(ry);
+    const int n = ihi - ilo;
+    for (int k = 0; k < n; ++k) {
+      float rx = rx0 + static_cast<float>(k) * step;
+      float old = z[k];
+      float nz = std::min(old, cell(rx, ryf));
+      pen = std::max(pen, old - nz);
+      if constexpr (M == SweepMode::Cut) z[k] = nz;
+    }
+  }
+  return pen;
+}
+
+// Lower surface height above the tip, from the squared radial distance d2 <= R^2.
+struct FlatProfile {
+  NCVM_INLINE float operator()(float) const { return 0.0f; }
+};
+struct BallProfile {
+  float r, r2;
+  NCVM_INLINE float operator()(float d2) const { return r - std::sqrt(std::max(r2 - d2, 0.0f)); }
+};
+struct BullProfile {
+  float flat, c, c2;
+  NCVM_INLINE float operator()(float d2) const {
+    float u = std::max(std::sqrt(d2) - flat, 0.0f);
+    return c - std::sqrt(std::max(c2 - u * u, 0.0f));
+  }
+};
+struct DrillProfile {
+  float slope;
+  NCVM_INLINE float operator()(float d2) const { return std::sqrt(d2) * slope; }
+};
+
+// Horizontal move (or a point): the envelope is z + h(distance to the segment in XY).
+template <SweepMode M, class Profile>
+NCVM_INLINE float horizontal(HeightField& f, double radius, const Point3& a, double dx, double dy,
+                             Stripe stripe, Profile h) {
+  const double l2 = dx * dx + dy * dy;
+  const auto inv = static_cast<float>(l2 > 0 ? 1.0 / l2 : 0.0);
+  const auto fdx = static_cast<float>(dx), fdy = static_cast<float>(dy);
+  const auto r2 = static_cast<float>(radius * radius);
+  const auto z0 = static_cast<float>(a[2]);
+  return sweepStadium<M>(f, a[0], a[1], dx, dy, radius, stripe, [=](float rx, float ry) {
+    float t = std::clamp((rx * fdx + ry * fdy) * inv, 0.0f, 1.0f);
+    float ex = rx - t * fdx, ey = ry - t * fdy;
+    float d2 = ex * ex + ey * ey;
+    return d2 <= r2 ? z0 + h(d2) : kNone;
+  });
+}
+
+// Ball on a sloped move: the lower surface of the capsule of ball centres. Where the
+// nearest point lies inside the segment it is the cylinder around it (a quadratic in z),
+// otherwise one of the end spheres; the envelope is the lowest valid one.
+template <SweepMode M>
+NCVM_INLINE float ballSloped(HeightField& f, double radius, const Point3& a, const Point3& d,
+                             Stripe stripe) {
+  const double lxy2 = d[0] * d[0] + d[1] * d[1], l2 = lxy2 + d[2] * d[2];
+  const auto fdx = static_cast<float>(d[0]), fdy = static_cast<float>(d[1]);
+  const auto fdz = static_cast<float>(d[2]);
+  const auto fl2 = static_cast<float>(l2), inv = static_cast<float>(1.0 / l2);
+  const auto invxy = static_cast<float>(1.0 / lxy2);
+  const auto r = static_cast<float>(radius), r2 = r * r;
+  const auto za = static_cast<float>(a[2] + radius), zb = static_cast<float>(a[2] + d[2] + radius);
+  return sweepStadium<M>(f, a[0], a[1], d[0], d[1], radius, stripe, [=](float rx, float ry) {
+    float s = rx * rx + ry * ry;
+    float p = rx * fdx + ry * fdy;
+    float bx = rx - fdx, by = ry - fdy;
+    float sb = bx * bx + by * by;
+    float zA = s <= r2 ? za - std::sqrt(std::max(r2 - s, 0.0f)) : kNone;
+    float zB = sb <= r2 ? zb - std::sqrt(std::max(r2 - sb, 0.0f)) : kNone;
+    // Cylinder: |w|^2 - (w.d)^2 / l2 = r^2 for w = (rx, ry, wz), lower root.
+    float q = p * p * fdz * fdz - (fdx * fdx + fdy * fdy) * (s * fl2 - p * p - r2 * fl2);
+    float wz = (p * fdz - std::sqrt(std::max(q, 0.0f))) * invxy;
+    float t = (p + wz * fdz) * inv;
+    float zC = (q >= 0 && t >= 0 && t <= 1) ? za + wz : kNone;
+    return std::min(zC, std::min(zA, zB));
+  });
+}
+
+// Flat end mill on a sloped move: the bottom disc is lowest at one end of the interval of
+// positions where it covers the cell.
+template <SweepMode M>
+NCVM_INLINE float flatSloped(HeightField& f, double radius, const Point3& a, const Point3& d,
+                             Stripe stripe) {
+  const double lxy2 = d[0] * d[0] + d[1] * d[1];
+  const auto fdx = static_cast<float>(d[0]), fdy = static_cast<float>(d[1]);
+  const auto fdz = static_cast<float>(d[2]);
+  const auto fl = static_cast<float>(lxy2), invxy = static_cast<float>(1.0 / lxy2);
+  const auto r2 = static_cast<float>(radius * radius);
+  const auto z0 = static_cast<float>(a[2]);
+  const bool rising = d[2] > 0;
+  return sweepStadium<M>(f, a[0], a[1], d[0], d[1], radius, stripe, [=](float rx, float ry) {
+    float s = rx * rx + ry * ry;
+    float p = rx * fdx + ry * fdy;
+    float disc = p * p - fl * (s - r2);
+    float root = std::sqrt(std::max(disc, 0.0f));
+    float t1 = (p - root) * invxy, t2 = (p + root) * invxy;
+    float t = rising ? std::max(t1, 0.0f) : std::min(t2, 1.0f);
+    bool hit = disc >= 0 && t1 <= 1 && t2 >= 0;
+    return hit ? z0 + t * fdz : kNone;
+  });
+}
+
+// Any profile on a sloped move: z(t) + h(|q - p(t)|) is convex in t (h convex and rising,
+// the distance convex), so bisection on its slope finds the minimum. Scalar, double.
+template <SweepMode M>
+float generalSloped(HeightField& f, const MillTool& tool, const Point3& a, const Point3& d,
+                    Stripe stripe) {
+  const double lxy2 = d[0] * d[0] + d[1] * d[1], r = tool.radius;
+  const double ax = a[0], ay = a[1];
+  auto slope = [&](double qx, double qy, double t) {
+    double ex = ax + t * d[0] - qx, ey = ay + t * d[1] - qy;
+    double dist = std::sqrt(ex * ex + ey * ey);
+    if (dist < 1e-12) return d[2];
+    double dr = (ex * d[0] + ey * d[1]) / dist;
+    double eps = 1e-9;  // numerical derivative of the profile: robust at its vertical edge
+    double rr = std::min(dist, r - eps);
+    double hp = (tool.profile(rr + eps) - tool.profile(std::max(rr - eps, 0.0))) / (2 * eps);
+    return d[2] + hp * dr;
+  };
+  // Cells come in as local float coordinates; the minimisation runs in double.
+  return sweepStadium<M>(f, ax, ay, d[0], d[1], r, stripe, [&](float rxf, float ryf) {
+    double rx = rxf, ry = ryf, qx = ax + rx, qy = ay + ry;
+    double s = rx * rx + ry * ry, p = rx * d[0] + ry * d[1];
+    double disc = p * p - lxy2 * (s - r * r);
+    if (disc < 0) return kNone;
+    double root = std::sqrt(disc);
+    double lo = std::max((p - root) / lxy2, 0.0), hi = std::min((p + root) / lxy2, 1.0);
+    if (lo > hi) return kNone;
+    for (int it = 0; it < 50 && hi - lo > 1e-12; ++it) {
+      double mid = 0.5 * (lo + hi);
+      if (slope(qx, qy, mid) > 0)
+        hi = mid;
+      else
+        lo = mid;
+    }
+    double t = 0.5 * (lo + hi);
+    double ex = ax + t * d[0] - qx, ey = ay + t * d[1] - qy;
+    double dist = std::min(std::sqrt(ex * ex + ey * ey), r);
+    return static_cast<float>(a[2] + t * d[2] + tool.profile(dist));
+  });
+}
+
+template <SweepMode M>
+NCVM_INLINE float lineImpl(HeightField& f, const MillTool& tool, const Point3& a0, const Point3& b0,
+                           Stripe stripe) {
+  Point3 a = a0, d{b0[0] - a0[0], b0[1] - a0[1], b0[2] - a0[2]};
+  double lxy2 = d[0] * d[0] + d[1] * d[1];
+  if (lxy2 < 1e-18) {  // a plunge or retract: the tool at its lowest point
+    if (d[2] < 0) a = b0;
+    d = {0, 0, 0};
+  }
+  const double r = tool.radius;
+  const bool flatMove = std::abs(d[2]) <= 1e-9;
+  const auto fr = static_cast<float>(r);
+  switch (tool.kind) {
+    case MillToolKind::Flat:
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe, FlatProfile{})
+                      : flatSloped<M>(f, r, a, d, stripe);
+    case MillToolKind::Ball:
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe, BallProfile{fr, fr * fr})
+                      : ballSloped<M>(f, r, a, d, stripe);
+    case MillToolKind::Bull: {
+      auto c = static_cast<float>(tool.corner);
+      BullProfile h{static_cast<float>(r - tool.corner), c, c * c};
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe, h)
+                      : generalSloped<M>(f, tool, a, d, stripe);
+    }
+    case MillToolKind::Drill:
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe,
+                                      DrillProfile{static_cast<float>(tool.coneSlope)})
+                      : generalSloped<M>(f, tool, a, d, stripe);
+  }
+  return 0;
+}
+
+NCVM_CLONES float cutLine(HeightField& f, const MillTool& tool, const Point3& a, const Point3& b,
+                          Stripe stripe) {
+  return lineImpl<SweepMode::Cut>(f, tool, a, b, stripe);
+}
+NCVM_CLONES float measureLine(HeightField& f, const MillTool& tool, const Point3& a,
+                              const Point3& b, Stripe stripe) {
+  return lineImpl<SweepMode::Measure>(f, tool, a, b, stripe);
+}
+
+// The smallest angle-aligned box around an arc.
+void arcBox(double cx, double cy, double ra, double a0, double sweep, double box[4]) {
+  double a1 = a0 + sweep;
+  box[0] = std::min(cx + ra * std::cos(a0), cx + ra * std::cos(a1));
+  box[1] = std::max(cx + ra * std::cos(a0), cx + ra * std::cos(a1));
+  box[2] = std::min(cy + ra * std::sin(a0), cy + ra * std::sin(a1));
+  box[3] = std::max(cy + ra * std::sin(a0), cy + ra * std::sin(a1));
+  double lo = std::min(a0, a1), hi = std::max(a0, a1);
+  for (int k = static_cast<int>(std::floor(lo / (M_PI / 2))) - 1; k * (M_PI / 2) <= hi + 1e-12;
+       ++k) {
+    double ang = k * (M_PI / 2);
+    if (ang < lo || ang > hi) continue;
+    double x = cx + ra * std::cos(ang), y = cy + ra * std::sin(ang);
+    box[0] = std::min(box[0], x);
+    box[1] = std::max(box[1], x);
+    box[2] = std::min(box[2], y);
+    box[3] = std::max(box[3], y);
+  }
+}
+
+template <SweepMode M>
+float arcImpl(HeightField& f, const MillTool& tool, double cx, double cy, double ra, double a0,
+              double sweep, double z, Stripe stripe) {
+  // Work with a counter-clockwise sweep from `start`.
+  double start = sweep >= 0 ? a0 : a0 + sweep, span = std::abs(sweep);
+  double box[4];
+  arcBox(cx, cy, ra, start, span, box);
+  const double r = tool.radius;
+  const double p0x = cx + ra * std::cos(start), p0y = cy + ra * std::sin(start);
+  const double p1x = cx + ra * std::cos(start + span), p1y = cy + ra * std::sin(start + span);
+  int jlo, jhi, ilo, ihi;
+  f.rowsWithin(box[2] - r, box[3] + r, jlo, jhi);
+  f.columnsWithin(box[0] - r, box[1] + r, ilo, ihi);
+  float pen = 0;
+  for (int j = jlo; j < jhi; ++j) {
+    if (!stripe.owns(j)) continue;
+    double qy = f.cellY(j);
+    float* row = f.row(j);
+    for (int i = ilo; i < ihi; ++i) {
+      double qx = f.cellX(i), vx = qx - cx, vy = qy - cy;
+      double rho = std::hypot(vx, vy);
+      if (rho > ra + r || rho < ra - r) continue;
+      double phi = std::atan2(vy, vx) - start;
+      phi -= 2 * M_PI * std::floor(phi / (2 * M_PI));
+      double dist;
+      if (phi <= span || span >= 2 * M_PI - 1e-12) {
+        dist = std::abs(rho - ra);
+      } else {
+        dist = std::min(std::hypot(qx - p0x, qy - p0y), std::hypot(qx - p1x, qy - p1y));
+      }
+      if (dist > r) continue;
+      auto zt = static_cast<float>(z + tool.profile(dist));
+      float old = row[i], nz = std::min(old, zt);
+      pen = std::max(pen, old - nz);
+      if constexpr (M == SweepMode::Cut) row[i] = nz;
+    }
+  }
+  return pen;
+}
+
+}  // namespace
+
+float sweepLine(HeightField& f, const MillTool& tool, const Point3& a, const Point3& b,
+                Stripe stripe, SweepMode mode) {
+  return mode == SweepMode::Cut ? cutLine(f, tool, a, b, stripe)
+                                : measureLine(f, tool, a, b, stripe);
+}
+
+float sweepArcXY(HeightField& f, const MillTool& tool, double cx, double cy, double radius,
+                 double a0, double sweep, double z, Stripe stripe, SweepMode mode) {
+  return mode == SweepMode::Cut
+             ? arcImpl<SweepMode::Cut>(f, tool, cx, cy, radius, a0, sweep, z, stripe)
+             : arcImpl<SweepMode::Measure>(f, tool, cx, cy, radius, a0, sweep, z, stripe);
+}
+
+float holderPenetration(const HeightField& f, double r, double lift, const Point3& a,
+                        const Point3& b, Stripe stripe) {
+  MillTool t;
+  t.kind = MillToolKind::Flat;
+  t.radius = r;
+  // Measure mode never writes: the const_cast only shares the kernel.
+  return measureLine(const_cast<HeightField&>(f), t, {a[0], a[1], a[2] + lift},
+                     {b[0], b[1], b[2] + lift}, stripe);
+}
+
+}  // namespace ncvm
