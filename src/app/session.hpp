@@ -12,6 +12,7 @@
 #include "exec/executor.hpp"
 #include "lang/program_store.hpp"
 #include "machine/setup.hpp"
+#include "timing/time_report.hpp"
 
 namespace ncvm {
 
@@ -42,6 +43,9 @@ class Session {
     nlohmann::json state;
     std::string printed;  // DPRNT/BPRNT output
     nlohmann::json machineState;
+    // The cycle-time model's totals and breakdowns (also in state["timing"]); empty when
+    // timing is off (setTiming(false)).
+    std::shared_ptr<const TimeReport> timing;
   };
   // Runs the main program; `sink` receives every event (may be nullptr). With a
   // machine state (memoryToJson format) the control starts from it instead of the setup's
@@ -52,12 +56,16 @@ class Session {
   // decimal-point and duplicate-word warnings, for the programs of the given files.
   nlohmann::json check() const;
 
+  // The cycle-time stage runs by default (setup [timing]); off only for measurements.
+  void setTiming(bool on) { timing_ = on; }
+
  private:
   Setup setup_;
   SourceFiles files_;
   ProgramStore store_;
   const Program* main_ = nullptr;
   std::vector<const Program*> ownPrograms_;  // from files named on the command line
+  bool timing_ = true;
 };
 
 nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);

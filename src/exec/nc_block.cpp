@@ -259,6 +259,7 @@ void Executor::execNc(const Block& b) {
     if (!lathe_ && info.group == 1 && modal_.g[9] != 800) cancelCycle();
   }
   deriveModal();
+  exactStop_ = oneShot == 90 || (!lathe_ && modal_.g[15] == 610);  // G09 / G61 (time model)
   const bool crcMode = !lathe_ && (modal_.g[7] != 400 || crcBusy());
   if (crcMode) {
     deferring_ = true;
