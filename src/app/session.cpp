@@ -103,7 +103,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
         r.end = EndReason::Limit;
       }
     }
-    r.timing = std::make_shared<TimeReport>(stage->report());
+    r.timing = std::make_shared<TimeReport>(stage->takeReport());
   }
   r.machineState = memoryToJson(exec.memory(), setup_);
   r.alarm = late ? late : exec.alarm();

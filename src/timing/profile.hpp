@@ -22,4 +22,15 @@ double reachable(double v0, double d, const Ramp& r);
 // they are not, the time of a constant-acceleration change is returned.
 double blockTime(double v0, double v1, double vmax, double len, const Ramp& r);
 
+// The whole profile of a stretch: up-ramp v0 -> vp, cruise at vp, down-ramp vp -> v1, and the
+// time at which a given distance is passed (to split a stretch of several blocks).
+struct Profile {
+  double v0 = 0, vp = 0, v1 = 0, len = 0;
+  Ramp r;
+  double dUp = 0, tUp = 0, dDown = 0, tDown = 0, tCruise = 0;
+  double total() const { return tUp + tCruise + tDown; }
+  double timeAt(double s) const;
+};
+Profile makeProfile(double v0, double v1, double vmax, double len, const Ramp& r);
+
 }  // namespace ncvm::timing

@@ -34,15 +34,13 @@ void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double 
   OperationTime& o = op();
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
-  uint64_t key = (static_cast<uint64_t>(at.file) << 32) | at.line;
-  if (key != cache_.key || !cache_.line) {
-    LineTime& l = lines_[key];
-    if (l.count == 0) l.at = at;
-    cache_.key = key;
-    cache_.line = &l;  // unordered_map references stay valid across inserts
-  }
-  ++cache_.line->count;
-  cache_.line->time.add(model, simple);
+  if (at.file >= lines_.size()) lines_.resize(at.file + 1);
+  auto& file = lines_[at.file];
+  if (at.line >= file.size()) file.resize(std::max<size_t>(at.line + 1, file.size() * 2));
+  LineSlot& l = file[at.line];
+  if (l.count == 0) l.programName = at.programName, l.n = at.n;
+  ++l.count;
+  l.time.add(model, simple);
 }
 
 void TimeReport::addMove(const MoveEvent& e, double model, double simple) {
@@ -99,16 +97,27 @@ std::vector<ToolTime> TimeReport::byTool() const {
 }
 
 std::vector<LineTime> TimeReport::topLines(size_t n) const {
-  std::vector<LineTime> all;
-  all.reserve(lines_.size());
-  for (const auto& [k, l] : lines_) all.push_back(l);
-  std::sort(all.begin(), all.end(), [](const LineTime& a, const LineTime& b) {
+  // One pass keeping the n best (n is small): no copy of every line.
+  auto before = [](const LineTime& a, const LineTime& b) {
     if (a.time.model != b.time.model) return a.time.model > b.time.model;
     if (a.at.file != b.at.file) return a.at.file < b.at.file;
     return a.at.line < b.at.line;
-  });
-  if (all.size() > n) all.resize(n);
-  return all;
+  };
+  std::vector<LineTime> best;
+  for (size_t f = 0; f < lines_.size(); ++f) {
+    for (size_t ln = 0; ln < lines_[f].size(); ++ln) {
+      const LineSlot& l = lines_[f][ln];
+      if (!l.count) continue;
+      LineTime t{
+          EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), l.n, l.programName},
+          l.count, l.time};
+      if (best.size() == n && n > 0 && !before(t, best.back())) continue;
+      if (n == 0) break;
+      best.insert(std::upper_bound(best.begin(), best.end(), t, before), t);
+      if (best.size() > n) best.pop_back();
+    }
+  }
+  return best;
 }
 
 namespace {

@@ -5,7 +5,6 @@
 // retracts), so two drilling strategies can be compared.
 #include <cstdint>
 #include <nlohmann/json.hpp>
-#include <unordered_map>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -71,19 +70,14 @@ class TimeReport {
   std::array<TimePair, kTimeKinds> byKind_{};
   std::vector<OperationTime> ops_;
   int tool_ = 0;
-  std::unordered_map<uint64_t, LineTime> lines_;
-  // The line of the previous event, so consecutive events of one block skip the hash; a
-  // copy starts without it (the pointer is into this object's map).
-  struct LineCache {
-    uint64_t key = ~0ull;
-    LineTime* line = nullptr;
-    LineCache() = default;
-    LineCache(const LineCache&) {}
-    LineCache& operator=(const LineCache&) {
-      key = ~0ull, line = nullptr;
-      return *this;
-    }
-  } cache_;
+  // Per file, per line (lines are dense: a vector, not a map); file and line are the indexes.
+  struct LineSlot {
+    const std::string* programName = nullptr;
+    int32_t n = -1;
+    uint32_t count = 0;
+    TimePair time;
+  };
+  std::vector<std::vector<LineSlot>> lines_;
   // Drilling state.
   DrillStats drill_;
   bool inHole_ = false, retractedToTop_ = false;

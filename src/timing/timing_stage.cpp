@@ -37,6 +37,7 @@ TimingStage::TimingStage(const Setup& setup, EventSink& next)
     cornerDiff_[k] = t_.cornerSpeedDiff[k] / 60.0;
   }
   tMin_ = t_.minBlockTimeMs / 1000.0;
+  if (t_.dynamic) held_.reserve(4 * static_cast<size_t>(std::max(1, t_.lookaheadBlocks)) + 256);
 }
 
 // ---- spindle ---------------------------------------------------------------------------
@@ -203,73 +204,120 @@ double TimingStage::rapidTime(const MoveEvent& e) const {
   return time;
 }
 
+// Groups the held blocks into runs. A run ends at an exact stop, at a joint whose corner
+// speed is below the feed, where the feed changes by more than 20 %, and after 128 blocks
+// (so memory stays bounded; a cut inside a cruise costs nothing).
+void TimingStage::buildRuns(size_t look) {
+  size_t n = held_.size();
+  runs_.clear();
+  lengths_.assign(n + 1, 0.0);
+  for (size_t i = 0; i < n; ++i) lengths_[i + 1] = lengths_[i] + held_[i].s.length;
+  bool open = false;
+  size_t realBlocks = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const Segment& s = held_[i].s;
+    bool join = open && !runs_.back().stopAfter && std::isinf(runs_.back().exitCap);
+    if (join && s.length > 0 && realBlocks > 0) {
+      const Run& r = runs_.back();
+      double lo = std::min(r.vmax, s.vmax), hi = std::max(r.vmax, s.vmax);
+      join = s.vJunction >= lo * (1 - 1e-9) && lo >= 0.8 * hi && i - r.first < 128;
+    }
+    if (!join) {
+      runs_.push_back(Run{i, i, 0, kInf, s.vJunction, Ramp{kInf, 0}, false, kInf, 0, 0});
+      open = true;
+      realBlocks = 0;
+    }
+    Run& r = runs_.back();
+    r.last = i;
+    r.length += s.length;
+    r.stopAfter = s.stopAfter;
+    if (s.length > 0) {
+      if (realBlocks == 0) r.vJunction = std::min(r.vJunction, s.vJunction);
+      ++realBlocks;
+      r.vmax = std::min(r.vmax, s.vmax);
+      r.ramp.a = std::min(r.ramp.a, s.ramp.a);
+      if (s.ramp.j > 0) r.ramp.j = r.ramp.j > 0 ? std::min(r.ramp.j, s.ramp.j) : s.ramp.j;
+      // Look-ahead depth inside the run: at the end of block i the control must be able to
+      // stop within the look-ahead - 1 blocks it has read after it.
+      // That caps the run's speed; with nothing read ahead (look-ahead 1) it stops there.
+      size_t lastSeen = std::min(n, i + look);
+      if (lastSeen < n) {
+        double window = lengths_[lastSeen] - lengths_[i + 1];
+        if (window <= 0)
+          r.exitCap = 0;
+        else
+          r.vmax = std::min(r.vmax, reachable(0, window, s.ramp));
+      }
+    }
+  }
+}
+
 void TimingStage::plan(bool toStop) {
   size_t n = held_.size();
   if (n == 0) return;
   size_t look = static_cast<size_t>(std::max(1, t_.lookaheadBlocks));
-  // Without a stop in sight, forward all but the last look-ahead window: their speeds no
-  // longer depend on blocks not read yet (each must be able to stop within the window).
-  size_t keep = toStop ? 0 : std::min(n, look);
-  lengths_.assign(n + 1, 0.0);
-  for (size_t i = 0; i < n; ++i) lengths_[i + 1] = lengths_[i] + held_[i].s.length;
-  vEntryMax_.assign(n, 0.0);
-  vExitMax_.assign(n, 0.0);
-  vExitMax_[n - 1] = 0;  // a stop (or, for a partial plan, the end of what is known)
-  for (size_t i = n; i-- > 0;) {
-    Segment& s = held_[i].s;
-    if (s.stopAfter) vExitMax_[i] = 0;
-    double entry = std::min({s.vmax, s.vJunction, reachable(vExitMax_[i], s.length, s.ramp)});
+  buildRuns(look);
+  size_t m = runs_.size();
+  // Without a stop in sight, forward only the runs that end before the last look-ahead
+  // window: their speeds no longer depend on blocks not read yet.
+  size_t commitRuns = m;
+  if (!toStop) {
+    commitRuns = 0;
+    while (commitRuns < m && runs_[commitRuns].last + look < n) ++commitRuns;
+    if (commitRuns == 0) return;
+  }
+  vEntryMax_.assign(m, 0.0);
+  vExitMax_.assign(m, 0.0);
+  vExitMax_[m - 1] = 0;  // a stop (or, for a partial plan, the end of what is known)
+  for (size_t i = m; i-- > 0;) {
+    Run& r = runs_[i];
+    vExitMax_[i] = std::min(vExitMax_[i], r.exitCap);
+    if (r.stopAfter) vExitMax_[i] = 0;
+    double vmax = std::isinf(r.vmax) ? vExitMax_[i] : r.vmax;
+    double entry = std::min({vmax, r.vJunction, reachable(vExitMax_[i], r.length, r.ramp)});
     vEntryMax_[i] = entry;
-    if (i > 0) {
-      Segment& p = held_[i - 1].s;
-      // Look-ahead depth: at the end of block i-1 the control must be able to stop within
-      // the look-ahead - 1 blocks after it.
-      size_t last = std::min(n, i + look - 1);
-      double window = lengths_[last] - lengths_[i];
-      // (When the window reaches past what is held, the stop at the end covers it.)
-      double cap = last < n ? reachable(0, window, s.length > 0 ? s.ramp : p.ramp) : kInf;
-      vExitMax_[i - 1] = std::min({entry, p.vmax, cap});
-    }
+    if (i > 0) vExitMax_[i - 1] = std::min(entry, runs_[i - 1].vmax);
   }
   double v = entry_;
-  size_t commitCount = n - keep;
-  for (size_t i = 0; i < n; ++i) {
-    Segment& s = held_[i].s;
-    s.vEntry = i == 0 ? entry_ : std::min(v, vEntryMax_[i]);
-    s.vExit = std::min(vExitMax_[i], reachable(s.vEntry, s.length, s.ramp));
-    if (s.length <= 0) s.vExit = std::min(s.vEntry, vExitMax_[i]);
-    v = s.vExit;
-    if (i + 1 == commitCount) entry_ = v;
+  for (size_t i = 0; i < m; ++i) {
+    Run& r = runs_[i];
+    r.vEntry = i == 0 ? entry_ : std::min(v, vEntryMax_[i]);
+    r.vExit = std::min(vExitMax_[i], reachable(r.vEntry, r.length, r.ramp));
+    if (r.length <= 0) r.vExit = std::min(r.vEntry, vExitMax_[i]);
+    v = r.vExit;
   }
-  for (size_t i = 0; i < commitCount; ++i) {
-    commit(held_.front());
-    held_.pop_front();
-  }
-  if (toStop) {
-    entry_ = 0;
-    haveDir_ = false;
-  }
+  for (size_t i = 0; i < commitRuns; ++i) commit(runs_[i]);
+  entry_ = toStop ? 0.0 : runs_[commitRuns - 1].vExit;
+  held_.erase(held_.begin(),
+              held_.begin() + static_cast<std::ptrdiff_t>(runs_[commitRuns - 1].last + 1));
+  if (toStop) haveDir_ = false;
 }
 
-void TimingStage::commit(Held& h) {
-  Segment& s = h.s;
-  double time = s.length > 0 ? blockTime(s.vEntry, s.vExit, s.vmax, s.length, s.ramp) : 0.0;
-  time = std::max(time, tMin_);
-  if (s.stopAfter) time += t_.inPositionS;
-  h.e.time = time;
-  report_.addMove(h.e, time, h.e.timeSimple);
-  next_.onMove(h.e);
-  for (const auto& sp : h.after) next_.onSpindle(sp);
+void TimingStage::commit(const Run& run) {
+  timing::Profile prof = timing::makeProfile(
+      run.vEntry, run.vExit, std::isinf(run.vmax) ? 0.0 : run.vmax, run.length, run.ramp);
+  double s = 0, before = 0;
+  for (size_t i = run.first; i <= run.last; ++i) {
+    Held& h = held_[i];
+    s += h.s.length;
+    double at = i == run.last ? prof.total() : prof.timeAt(s);
+    double time = std::max(at - before, tMin_);
+    before = at;
+    if (i == run.last && run.stopAfter) time += t_.inPositionS;
+    h.e.time = time;
+    report_.addMove(h.e, time, h.e.timeSimple);
+    next_.onMove(h.e);
+    for (const auto& sp : h.after) next_.onSpindle(sp);
+  }
 }
 
 // ---- events --------------------------------------------------------------------------------
 
 void TimingStage::onMove(const MoveEvent& in) {
   if (!t_.dynamic) {
-    MoveEvent e = in;
-    e.timeSimple = e.time;
-    report_.addMove(e, e.time, e.time);
-    next_.onMove(e);
+    // The simple model: time is length / feed already (timeSimple -1 means the same).
+    report_.addMove(in, in.time, in.time);
+    next_.onMove(in);
     return;
   }
   if (in.mode == MoveMode::Rapid || in.thread) {

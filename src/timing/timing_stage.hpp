@@ -12,7 +12,6 @@
 // difference (1783), the arc feed clamp (1730-1732), a look-ahead of N blocks, the block
 // processing time, exact stop (G09, G61); dwell in seconds or revolutions; M, S and T
 // function times, the spindle ramps and G96 following X with the spindle acceleration.
-#include <deque>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -28,6 +27,7 @@ class TimingStage final : public EventSink {
   // Plans and forwards the moves still held (the program ended or stopped).
   void finish();
   const TimeReport& report() const { return report_; }
+  TimeReport takeReport() { return std::move(report_); }
   bool dynamic() const { return t_.dynamic; }
 
   void onMove(const MoveEvent& e) override;
@@ -58,9 +58,20 @@ class TimingStage final : public EventSink {
     Segment s;
     std::vector<SpindleEvent> after;  // G96 rpm events the control sent after the move
   };
+  // A stretch of held blocks planned as one profile: the joints inside it do not limit the
+  // speed, so the acceleration carries on across them (as it does on the control).
+  struct Run {
+    size_t first = 0, last = 0;  // held_ indexes, inclusive
+    double length = 0, vmax = 0, vJunction = 0;
+    timing::Ramp ramp;
+    bool stopAfter = false;
+    double exitCap = 0;  // look-ahead depth: the speed from which it can stop in what is read
+    double vEntry = 0, vExit = 0;
+  };
   void stop() { plan(true); }
   void plan(bool toStop);
-  void commit(Held& h);
+  void buildRuns(size_t look);
+  void commit(const Run& run);
   Segment segmentFor(const MoveEvent& e, AxisArray& dirIn, AxisArray& dirOut);
   double rapidTime(const MoveEvent& e) const;
   double spindleFeed(const MoveEvent& e, double lengthMm);
@@ -71,7 +82,7 @@ class TimingStage final : public EventSink {
   TimingSetup t_;
   EventSink& next_;
   TimeReport report_;
-  std::deque<Held> held_;
+  std::vector<Held> held_;  // a vector reused as a queue: no allocation per move
   double entry_ = 0;  // velocity at the start of held_.front()
   AxisArray lastDir_{};
   bool haveDir_ = false;
@@ -83,6 +94,7 @@ class TimingStage final : public EventSink {
   double rpm_ = 0;
   SpindleDir dir_ = SpindleDir::Stop;
   std::vector<double> lengths_, vEntryMax_, vExitMax_;
+  std::vector<Run> runs_;
 };
 
 }  // namespace ncvm

@@ -17,7 +17,7 @@ struct MoveTimes final : EventSink {
   std::vector<double> time, simple;
   void onMove(const MoveEvent& e) override {
     time.push_back(e.time);
-    simple.push_back(e.timeSimple);
+    simple.push_back(e.timeSimple >= 0 ? e.timeSimple : e.time);
   }
 };
 
@@ -101,6 +101,27 @@ TEST(TimingStage, CollinearChainRunsAsOneMove) {
   // S-curve: blocks long enough to finish each ramp in the first and last block.
   ncvm::Setup bell = dynamicSetup({"timing.accel_change_time=50"});
   EXPECT_NEAR(total(run(chain(5, 20), bell)), total(run(chain(1, 100), bell)), 1e-9);
+  // S-curve over blocks shorter than a ramp: the acceleration carries on across the joints.
+  ncvm::Setup deep = dynamicSetup({"timing.accel_change_time=50", "timing.lookahead_blocks=100"});
+  EXPECT_NEAR(total(run(chain(50, 0.1), deep)), blockTime(0, 0, 100, 5, Ramp{1000, 20000}), 1e-9);
+}
+
+TEST(Profile, TimeAtSplitsTheProfile) {
+  for (Ramp r : {Ramp{1000, 0}, Ramp{1000, 20000}}) {
+    Profile p = makeProfile(0, 10, 100, 50, r);
+    EXPECT_NEAR(p.total(), blockTime(0, 10, 100, 50, r), 1e-12);
+    double prev = 0;
+    for (int k = 1; k <= 50; ++k) {
+      double t = p.timeAt(k);
+      EXPECT_GT(t, prev);
+      prev = t;
+    }
+    EXPECT_NEAR(prev, p.total(), 1e-12);
+    // Up-ramp from rest: 0.5 a t^2 (trapezoid) at 1 mm.
+    if (r.j <= 0) {
+      EXPECT_NEAR(p.timeAt(1), std::sqrt(2.0 / 1000), 1e-12);
+    }
+  }
 }
 
 TEST(TimingStage, LookaheadOfOneBlockStopsAtEveryJoint) {
