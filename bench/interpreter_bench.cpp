@@ -2,6 +2,7 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <string>
 
 #include "app/session.hpp"
@@ -43,6 +44,50 @@ void BM_WhileLoop(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 BENCHMARK(BM_WhileLoop)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+// A CAM finishing program: a raster over a wavy surface, X, Y and Z on every line (short
+// segments, small direction changes), as bench/gen_programs.py writes linear_1m.nc.
+std::string camProgram(int lines) {
+  std::string s = "O0003\nG90 G21 G17 G94\nT1 M06\nS8000 M03\nG00 X0 Y0 Z5.\nG01 Z0 F3000.\n";
+  s.reserve(static_cast<size_t>(lines) * 28);
+  const int perRow = 500;
+  for (int k = 0; k < lines; ++k) {
+    int row = k / perRow, col = k % perRow;
+    double x = (row % 2 ? perRow - col : col) * 0.2, y = row * 0.5;
+    double z = -1.0 + 0.5 * std::sin(x * 0.05) * std::cos(y * 0.07);
+    s += fmt::format("X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
+  }
+  s += "G00 Z50.\nM05\nM30\n";
+  return s;
+}
+
+// The same 100,000-block program with the cycle-time model off (no stage), in its simple
+// mode, and in its dynamic mode (look-ahead planning with the 0i-MF defaults).
+void camRun(benchmark::State& state, bool timing, bool dynamic) {
+  std::string text = camProgram(static_cast<int>(state.range(0)));
+  ncvm::Setup setup = ncvm::defaultSetup();
+  setup.timing.dynamic = dynamic;
+  for (auto _ : state) {
+    ncvm::Session s(setup);
+    s.setTiming(timing);
+    s.addProgramText(text, "cam.nc");
+    auto r = s.run(nullptr);
+    benchmark::DoNotOptimize(r.stats.blocks);
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+void BM_CamNoTiming(benchmark::State& state) {
+  camRun(state, false, false);
+}
+void BM_CamTimingSimple(benchmark::State& state) {
+  camRun(state, true, false);
+}
+void BM_CamTimingDynamic(benchmark::State& state) {
+  camRun(state, true, true);
+}
+BENCHMARK(BM_CamNoTiming)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CamTimingSimple)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CamTimingDynamic)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "app/machine_state.hpp"
+#include "timing/timing_stage.hpp"
+
 #ifndef NCVM_SOURCE_MACROS
 #define NCVM_SOURCE_MACROS ""
 #endif
@@ -76,6 +79,7 @@ nlohmann::json axesJson(const AxisArray& a, int n) {
 
 Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState) {
   Result r;
+  std::optional<Alarm> late;
   if (!main_) throw std::runtime_error("no program to run");
   EventSink none;
   // The stock model listens beside the caller's sink; it is built first so a setup it
@@ -91,7 +95,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     both.add(stock.get());
     sink = &both;
   }
-  Executor exec(setup_, store_, sink ? *sink : none);
+  // The time model sits between the control and the caller's sinks.
+  std::unique_ptr<TimingStage> stage;
+  if (timing_) stage = std::make_unique<TimingStage>(setup_, sink ? *sink : none);
+  Executor exec(setup_, store_, stage ? static_cast<EventSink&>(*stage) : sink ? *sink : none);
   if (machineState) {
     MachineMemory mem = exec.memory();
     memoryFromJson(*machineState, setup_, mem);
@@ -99,8 +106,23 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     exec.restartFromMemory();
   }
   r.end = exec.run(*main_);
+  if (stage) {
+    try {
+      stage->finish();
+    } catch (const AlarmError& e) {
+      // A sink refused the moves the stage still held (the trace size limit).
+      if (!exec.alarm()) {
+        Alarm a;
+        a.code = e.code();
+        a.text = e.text();
+        late = a;
+        r.end = EndReason::Limit;
+      }
+    }
+    r.timing = std::make_shared<TimeReport>(stage->takeReport());
+  }
   r.machineState = memoryToJson(exec.memory(), setup_);
-  r.alarm = exec.alarm();
+  r.alarm = late ? late : exec.alarm();
   r.stats = exec.stats();
   r.warnings = exec.warnings();
   r.printed = exec.printed();
@@ -131,7 +153,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   s["vars"] = vars;
   s["work_offsets"] = workOffsetsJson(exec.memory(), setup_, true);
   s["tool_offsets"] = toolOffsetsJson(exec.memory(), setup_);
-  s["cycle_time"] = r.stats.time;
+  // cycle_time is the modelled time ([timing] model = "dynamic") or length / feed.
+  s["cycle_time"] = r.timing ? r.timing->total().model : r.stats.time;
+  s["cycle_time_simple"] = r.stats.time;
+  if (r.timing) s["timing"] = r.timing->toJson(files_, setup_.timing.dynamic);
   s["blocks"] = r.stats.blocks;
   s["moves"] = r.stats.moves;
   s["path_length"] = {{"rapid", r.stats.rapidLength}, {"feed", r.stats.feedLength}};

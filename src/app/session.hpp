@@ -12,6 +12,7 @@
 #include "exec/executor.hpp"
 #include "lang/program_store.hpp"
 #include "machine/setup.hpp"
+#include "timing/time_report.hpp"
 
 namespace ncvm {
 
@@ -43,6 +44,9 @@ class Session {
     std::string printed;  // DPRNT/BPRNT output
     nlohmann::json machineState;
     nlohmann::json stock;  // the stock model's analysis (null without simulateStock)
+    // The cycle-time model's totals and breakdowns (also in state["timing"]); empty when
+    // timing is off (setTiming(false)).
+    std::shared_ptr<const TimeReport> timing;
   };
   // Simulates the stock ([stock] of the setup, src/sim/stock_model.hpp) beside the run:
   // its files go to outDir (none when empty), its analysis to Result::stock and to
@@ -60,6 +64,9 @@ class Session {
   // decimal-point and duplicate-word warnings, for the programs of the given files.
   nlohmann::json check() const;
 
+  // The cycle-time stage runs by default (setup [timing]); off only for measurements.
+  void setTiming(bool on) { timing_ = on; }
+
  private:
   Setup setup_;
   SourceFiles files_;
@@ -68,6 +75,7 @@ class Session {
   std::vector<const Program*> ownPrograms_;  // from files named on the command line
   bool stockOn_ = false;
   std::string stockOut_;
+  bool timing_ = true;
 };
 
 nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);

@@ -31,6 +31,14 @@ struct MoveEvent {
   double feed = 0;             // units/min after any per-revolution conversion
   double length = 0;           // path length in program units (helix and dog-leg included)
   double time = 0;             // seconds (simple model: length / feed; rapid per-axis rates)
+  // The cycle-time model (src/timing) puts its modelled time in `time` and keeps the simple
+  // one here; -1 while no timing stage has seen the event (then `time` is the simple one).
+  double timeSimple = -1;
+  // What the time model needs from the block: G09/G61 exact stop, inch units, and feed per
+  // revolution (units/rev) with G96's surface speed (m/min or ft/min) and G50/G92 S clamp.
+  bool exactStop = false;
+  bool inch = false;
+  double perRev = 0, surfaceSpeed = 0, rpmLimit = 0;
   // Arcs: centre (work coordinates) and plane (17, 18, 19).
   bool arc = false;
   std::array<double, 3> center{};
@@ -77,6 +85,7 @@ struct SpindleEvent {
   EventOrigin at;
   SpindleDir dir = SpindleDir::Stop;
   double rpm = 0;
+  bool follows = false;  // G96: the rpm following X after a move, not an S or M command
 };
 
 enum class CoolantState : uint8_t { Off, Flood, Mist };

@@ -1,4 +1,4 @@
-// The ncvm command: run, check, and the generated reference tables (alarms, codes).
+// The ncvm command: run, check, compare, and the generated reference tables (alarms, codes).
 // Exit status: 0 normal end, 3 alarm, 2 usage or setup error.
 #include <fmt/format.h>
 
@@ -9,6 +9,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "app/compare.hpp"
 #include "app/machine_state.hpp"
 #include "app/session.hpp"
 #include "app/sweep.hpp"
@@ -28,22 +29,32 @@ constexpr int kExitAlarm = 3;
 
 struct CommonOptions {
   std::vector<std::string> programs;
-  std::string setupPath;
+  std::vector<std::string> setupPaths;
   std::vector<std::string> libs;
   std::vector<std::string> sets;
   bool noMacros = false;
 };
 
+void addSetupOptions(CLI::App* cmd, CommonOptions& o);
+
 void addCommon(CLI::App* cmd, CommonOptions& o) {
   cmd->add_option("PROGRAM", o.programs, "program file(s); the first file's first program runs")->required();
-  cmd->add_option("--setup", o.setupPath, "machine and job setup (TOML, docs/setup-format.md)");
+  addSetupOptions(cmd, o);
+}
+
+void addSetupOptions(CLI::App* cmd, CommonOptions& o) {
+  cmd->add_option(
+      "--setup", o.setupPaths,
+      "machine and job setup (TOML, docs/setup-format.md); repeatable: later files override, "
+      "e.g. a preset then the job");
   cmd->add_option("--lib", o.libs, "folder of programs for M98/G65 calls (repeatable)");
   cmd->add_option("--set", o.sets, "override a setting: 3401#0=1, DPI=1, block_skip.1=true, limits.max_blocks=1000");
   cmd->add_flag("--no-macros", o.noMacros, "do not load the bundled macros/ folder");
 }
 
 Setup makeSetup(const CommonOptions& o) {
-  Setup s = o.setupPath.empty() ? defaultSetup() : loadSetup(o.setupPath);
+  Setup s = defaultSetup();
+  for (const auto& path : o.setupPaths) loadSetupInto(s, path);
   for (const auto& kv : o.sets) applySetting(s, kv);
   return s;
 }
@@ -131,9 +142,13 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
   if (!quiet) {
     fmt::print("ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
                endReasonName(r.end));
-    fmt::print("  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {} (length/feed)\n",
-               r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength, r.stats.rapidLength,
-               r.stats.feedLength, hms(r.stats.time));
+    std::string cycle = fmt::format("{} (length/feed)", hms(r.stats.time));
+    if (session.setup().timing.dynamic && r.timing)
+      cycle = fmt::format("{} (modelled), {} (length/feed)", hms(r.timing->total().model),
+                          hms(r.stats.time));
+    fmt::print("  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {}\n",
+               r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength,
+               r.stats.rapidLength, r.stats.feedLength, cycle);
     for (const auto& w : r.warnings)
       fmt::print("{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
     if (!tracePath.empty()) fmt::print("  trace: {}\n", tracePath);
@@ -158,6 +173,32 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
     return kExitAlarm;
   }
   return kExitOk;
+}
+
+// Runs two programs on the same setup and prints them side by side. Exit status as for
+// run: 3 when either ends in an alarm (its alarm line is printed), 2 on a usage error.
+int compareCommand(const CommonOptions& o, const std::string& a, const std::string& b, bool json) {
+  Setup setup = makeSetup(o);
+  auto runOne = [&](const std::string& file, std::string& alarmText) {
+    Session session(setup);
+    CommonOptions one = o;
+    one.programs = {file};
+    loadPrograms(session, one);
+    for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
+    ComparedRun run{file, session.run(nullptr)};
+    if (run.result.alarm) alarmText = alarmLine(*run.result.alarm, session.files());
+    return run;
+  };
+  std::string alarmA, alarmB;
+  ComparedRun ra = runOne(a, alarmA);
+  ComparedRun rb = runOne(b, alarmB);
+  if (json)
+    fmt::print("{}\n", compareJson(ra, rb, setup.timing.dynamic).dump(2));
+  else
+    fmt::print("{}", compareText(ra, rb, setup.timing.dynamic));
+  for (const auto* line : {&alarmA, &alarmB})
+    if (!line->empty()) fmt::print("{}\n", *line);
+  return alarmA.empty() && alarmB.empty() ? kExitOk : kExitAlarm;
 }
 
 int checkCommand(const CommonOptions& o, bool json) {
@@ -266,6 +307,15 @@ int main(int argc, char** argv) {
   sweep->add_option("--out", sweepOut,
                     "write each run's stock files into DIR/KEY=VALUE_... and the table into DIR");
   sweep->add_flag("--csv", sweepCsvOut, "print CSV instead of a Markdown table");
+  CommonOptions compareOpts;
+  std::string programA, programB;
+  bool compareJsonOut = false;
+  auto* compare =
+      app.add_subcommand("compare", "run two programs on the same setup and compare their times");
+  compare->add_option("A", programA, "first program file")->required();
+  compare->add_option("B", programB, "second program file")->required();
+  addSetupOptions(compare, compareOpts);
+  compare->add_flag("--json", compareJsonOut, "print the comparison as JSON");
 
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
@@ -284,6 +334,7 @@ int main(int argc, char** argv) {
     if (run->parsed()) return runCommand(runOpts, outs, quiet);
     if (check->parsed()) return checkCommand(checkOpts, json);
     if (sweep->parsed()) return sweepCommand(sweepOpts, varies, sweepOut, sweepCsvOut);
+    if (compare->parsed()) return compareCommand(compareOpts, programA, programB, compareJsonOut);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();
     return kExitOk;

@@ -175,6 +175,7 @@ class Executor {
   double rpm_ = 0;
   double spindleClamp_ = 0;  // G50/G92 S (lathe), 0 = none
   bool warnedRevFeed_ = false;
+  bool exactStop_ = false;  // G09 in this block or G61 modal: MoveEvent::exactStop
 
   // ---- run ----
   const Block* block_ = nullptr;

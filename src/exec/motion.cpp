@@ -113,6 +113,10 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
                         const std::array<int64_t, kMaxAxes>& toMachine) {
   e.at = origin_;
   e.thread = threadMove_;
+  e.exactStop = exactStop_;
+  e.inch = modal_.unit == InputUnit::Inch;
+  if (modal_.feedPerRev && e.mode != MoveMode::Rapid) e.perRev = modal_.feed;
+  if (modal_.css) e.surfaceSpeed = modal_.speed, e.rpmLimit = spindleClamp_;
   if (programmedEnd_) {
     e.compensated = true;
     e.programmedEnd = *programmedEnd_;
@@ -138,7 +142,7 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
     double rpm = cssRpmAt(toMachine[0]);
     if (rpm != rpm_) {
       rpm_ = rpm;
-      sink().onSpindle(SpindleEvent{origin_, spindleDir_, rpm_});
+      sink().onSpindle(SpindleEvent{origin_, spindleDir_, rpm_, true});
     }
   }
 }

@@ -264,6 +264,7 @@ void Executor::execNc(const Block& b) {
     if (info.group == 1 && modal_.g[9] != 800) cancelCycle();
   }
   deriveModal();
+  exactStop_ = oneShot == 90 || (!lathe_ && modal_.g[15] == 610);  // G09 / G61 (time model)
   const bool crcMode = modal_.g[7] != 400 || crcBusy();
   if (!lathe_ && modal_.plane != planeBefore && crc_ && crc_->active())
     throw AlarmError(AlarmId::CannotChangePlaneInCrc, fmt::format("G{} while G41/G42 vectors are in effect", modal_.plane));

@@ -84,9 +84,10 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
       const auto& k = asString(v, w);
       if (k != "mill" && k != "lathe") bad(w, "expected \"mill\" or \"lathe\"");
       Setup fresh = defaultSetup(k == "lathe" ? MachineKind::Lathe : MachineKind::Mill);
-      // Kind decides the axes; keep what was already set otherwise.
+      // Kind decides the axes; keep what was already set otherwise (also the axes when the
+      // kind does not change, so a job file may repeat the kind of the preset before it).
+      if (fresh.kind != s.kind) s.axes = fresh.axes;
       s.kind = fresh.kind;
-      s.axes = fresh.axes;
     } else if (rest == "control") {
       s.control = asString(v, w);
       static const char* known[] = {"0i-F", "0i-D", "30i", "31i", "16i", "18i", "21i", "0i-C"};
@@ -282,6 +283,14 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     else if (field == "holder_diameter") t.holderDiameter = asNumber(v, w);
     else if (field == "holder_length") t.holderLength = asNumber(v, w);
     else bad(w, "tool fields: type diameter corner_radius length point_angle flute_length nose_radius tip insert_angle edge_length holder_diameter holder_length");
+    return;
+  }
+  if (head == "timing") {
+    try {
+      applyTimingKey(s.timing, rest, v);
+    } catch (const std::invalid_argument& e) {
+      bad(w, e.what());
+    }
     return;
   }
   if (head == "probe") {
@@ -492,6 +501,11 @@ Setup defaultSetup(MachineKind kind) {
 
 Setup loadSetup(const std::string& path) {
   Setup s = defaultSetup();
+  loadSetupInto(s, path);
+  return s;
+}
+
+void loadSetupInto(Setup& s, const std::string& path) {
   toml::table t;
   try {
     t = toml::parse_file(path);
@@ -505,7 +519,6 @@ Setup loadSetup(const std::string& path) {
   std::filesystem::path dir = std::filesystem::path(path).parent_path();
   for (std::string* f : {&s.target.polyline, &s.target.heightMap})
     if (!f->empty() && std::filesystem::path(*f).is_relative()) *f = (dir / *f).string();
-  return s;
 }
 
 void applySetting(Setup& setup, const std::string& assignment) {

@@ -14,6 +14,7 @@
 #include "core/units.hpp"
 #include "exec/gcode_table.hpp"
 #include "machine/offsets.hpp"
+#include "timing/timing_setup.hpp"
 
 namespace ncvm {
 
@@ -141,6 +142,7 @@ struct Setup {
   std::vector<SolidSpec> solids;
   StockSpec stock;
   TargetSpec target;
+  TimingSetup timing;  // [timing]: the cycle-time model
 
   Series series() const;
   double param(const std::string& key, double fallback) const;
@@ -171,6 +173,8 @@ struct Setup {
 Setup defaultSetup(MachineKind kind = MachineKind::Mill);
 // Loads a setup file. Throws SetupError with the key and line.
 Setup loadSetup(const std::string& path);
+// Applies a setup file on top of `setup` (several --setup files: a preset, then the job).
+void loadSetupInto(Setup& setup, const std::string& path);
 // Applies "KEY=VALUE": a Fanuc parameter ("3401#0=1", "DPI=1") or a setup key
 // ("machine.kind=lathe", "block_skip.1=true", "limits.max_blocks=50", "vars.#500=2").
 void applySetting(Setup& setup, const std::string& assignment);

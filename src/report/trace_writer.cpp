@@ -100,7 +100,9 @@ void TraceWriter::onMove(const MoveEvent& e) {
   axes("end", e.end);
   axes("mstart", e.mstart);
   axes("mend", e.mend);
-  fmt::format_to(std::back_inserter(buf_), ",\"feed\":{},\"length\":{},\"time\":{}", e.feed, e.length, e.time);
+  fmt::format_to(std::back_inserter(buf_),
+                 ",\"feed\":{},\"length\":{},\"time\":{},\"time_simple\":{}", e.feed, e.length,
+                 e.time, e.timeSimple >= 0 ? e.timeSimple : e.time);
   if (e.arc)
     fmt::format_to(std::back_inserter(buf_), ",\"center\":[{},{},{}],\"plane\":{}", e.center[0], e.center[1],
                    e.center[2], e.plane);

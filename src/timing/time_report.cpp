@@ -1,0 +1,180 @@
+#include "timing/time_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncvm {
+
+const char* timeKindName(TimeKind k) {
+  static const char* names[] = {"rapid", "cutting", "dwell", "auxiliary"};
+  return names[static_cast<int>(k)];
+}
+
+OperationTime& TimeReport::op() {
+  if (ops_.empty()) ops_.push_back(OperationTime{tool_, EventOrigin{}, {}, 0, 0, {}});
+  return ops_.back();
+}
+
+void TimeReport::toolSelected(int tool, const EventOrigin& at) {
+  if (tool == tool_ && !ops_.empty()) return;
+  tool_ = tool;
+  // A new operation begins with each tool; an empty first one (nothing ran yet) is reused.
+  if (!ops_.empty() && ops_.back().time.model == 0 && ops_.back().time.simple == 0 &&
+      ops_.size() == 1) {
+    ops_.back().tool = tool;
+    ops_.back().first = at;
+    return;
+  }
+  ops_.push_back(OperationTime{tool, at, {}, 0, 0, {}});
+}
+
+void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double simple) {
+  total_.add(model, simple);
+  byKind_[static_cast<size_t>(kind)].add(model, simple);
+  OperationTime& o = op();
+  o.time.add(model, simple);
+  o.byKind[static_cast<size_t>(kind)].add(model, simple);
+  if (at.file >= lines_.size()) lines_.resize(at.file + 1);
+  auto& file = lines_[at.file];
+  if (at.line >= file.size()) file.resize(std::max<size_t>(at.line + 1, file.size() * 2));
+  LineSlot& l = file[at.line];
+  if (l.count == 0) l.programName = at.programName, l.n = at.n;
+  ++l.count;
+  l.time.add(model, simple);
+}
+
+void TimeReport::addMove(const MoveEvent& e, double model, double simple) {
+  add(e.mode == MoveMode::Rapid ? TimeKind::Rapid : TimeKind::Cutting, e.at, model, simple);
+  OperationTime& o = op();
+  (e.mode == MoveMode::Rapid ? o.rapidLength : o.feedLength) += e.length;
+  trackDrilling(e);
+}
+
+void TimeReport::trackDrilling(const MoveEvent& e) {
+  constexpr double eps = 1e-6;
+  bool sameXY = std::fabs(e.end[0] - e.start[0]) < eps && std::fabs(e.end[1] - e.start[1]) < eps;
+  bool atHole =
+      inHole_ && std::fabs(e.start[0] - holeX_) < eps && std::fabs(e.start[1] - holeY_) < eps;
+  if (e.mode != MoveMode::Rapid) {
+    bool peck = (e.mode == MoveMode::Linear) && sameXY && e.end[2] < e.start[2] - eps;
+    for (int k = 3; k < kMaxAxes && peck; ++k)
+      peck = std::fabs(e.end[static_cast<size_t>(k)] - e.start[static_cast<size_t>(k)]) < eps;
+    if (!peck) {
+      if (!sameXY || !atHole) inHole_ = false;
+      return;
+    }
+    if (!atHole) {
+      inHole_ = true;
+      ++drill_.holes;
+      holeX_ = e.start[0], holeY_ = e.start[1], holeTop_ = e.start[2];
+      retractedToTop_ = false;
+    } else if (retractedToTop_) {
+      ++drill_.fullRetracts;
+      retractedToTop_ = false;
+    }
+    ++drill_.pecks;
+    return;
+  }
+  if (!inHole_) return;
+  if (!sameXY || !atHole) {
+    inHole_ = false;
+    return;
+  }
+  if (e.end[2] >= holeTop_ - eps) retractedToTop_ = true;
+}
+
+std::vector<ToolTime> TimeReport::byTool() const {
+  std::vector<ToolTime> out;
+  for (const auto& o : ops_) {
+    auto it =
+        std::find_if(out.begin(), out.end(), [&](const ToolTime& t) { return t.tool == o.tool; });
+    if (it == out.end())
+      out.push_back(ToolTime{o.tool, o.time});
+    else
+      it->time.add(o.time.model, o.time.simple);
+  }
+  return out;
+}
+
+std::vector<LineTime> TimeReport::topLines(size_t n) const {
+  // One pass keeping the n best (n is small): no copy of every line.
+  auto before = [](const LineTime& a, const LineTime& b) {
+    if (a.time.model != b.time.model) return a.time.model > b.time.model;
+    if (a.at.file != b.at.file) return a.at.file < b.at.file;
+    return a.at.line < b.at.line;
+  };
+  std::vector<LineTime> best;
+  for (size_t f = 0; f < lines_.size(); ++f) {
+    for (size_t ln = 0; ln < lines_[f].size(); ++ln) {
+      const LineSlot& l = lines_[f][ln];
+      if (!l.count) continue;
+      LineTime t{
+          EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), l.n, l.programName},
+          l.count, l.time};
+      if (best.size() == n && n > 0 && !before(t, best.back())) continue;
+      if (n == 0) break;
+      best.insert(std::upper_bound(best.begin(), best.end(), t, before), t);
+      if (best.size() > n) best.pop_back();
+    }
+  }
+  return best;
+}
+
+namespace {
+nlohmann::json pair(const TimePair& t) {
+  return {{"time", t.model}, {"time_simple", t.simple}};
+}
+nlohmann::json where(const EventOrigin& at, const SourceFiles& files) {
+  if (at.line == 0) return nullptr;
+  return {{"file", files.name(at.file)},
+          {"line", at.line},
+          {"n", at.n >= 0 ? nlohmann::json(at.n) : nlohmann::json(nullptr)},
+          {"prog", at.programName ? nlohmann::json(*at.programName) : nlohmann::json(nullptr)}};
+}
+}  // namespace
+
+nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t topN) const {
+  nlohmann::json j;
+  j["model"] = dynamic ? "dynamic" : "simple";
+  j["total"] = total_.model;
+  j["total_simple"] = total_.simple;
+  nlohmann::json kinds = nlohmann::json::object();
+  for (int k = 0; k < kTimeKinds; ++k)
+    kinds[timeKindName(static_cast<TimeKind>(k))] = pair(byKind_[static_cast<size_t>(k)]);
+  j["by_type"] = kinds;
+  nlohmann::json tools = nlohmann::json::array();
+  for (const auto& t : byTool()) {
+    nlohmann::json e = pair(t.time);
+    e["tool"] = t.tool;
+    tools.push_back(e);
+  }
+  j["by_tool"] = tools;
+  nlohmann::json ops = nlohmann::json::array();
+  for (const auto& o : ops_) {
+    nlohmann::json e = pair(o.time);
+    e["tool"] = o.tool;
+    e["start"] = where(o.first, files);
+    e["path_length"] = {{"rapid", o.rapidLength}, {"feed", o.feedLength}};
+    nlohmann::json k = nlohmann::json::object();
+    for (int q = 0; q < kTimeKinds; ++q)
+      k[timeKindName(static_cast<TimeKind>(q))] = o.byKind[static_cast<size_t>(q)].model;
+    e["by_type"] = k;
+    ops.push_back(e);
+  }
+  j["operations"] = ops;
+  nlohmann::json top = nlohmann::json::array();
+  for (const auto& l : topLines(topN)) {
+    nlohmann::json e = where(l.at, files);
+    if (e.is_null()) e = nlohmann::json::object();
+    e["count"] = l.count;
+    e["time"] = l.time.model;
+    e["time_simple"] = l.time.simple;
+    top.push_back(e);
+  }
+  j["top_blocks"] = top;
+  j["drilling"] = {
+      {"holes", drill_.holes}, {"pecks", drill_.pecks}, {"full_retracts", drill_.fullRetracts}};
+  return j;
+}
+
+}  // namespace ncvm

@@ -1,0 +1,87 @@
+#pragma once
+// Where the time goes: totals, and breakdowns per block type, per tool, per operation (the
+// blocks between tool changes) and per program line, each with the modelled time and the
+// plain length / feed time beside it; plus the peck-drilling count (pecks and full
+// retracts), so two drilling strategies can be compared.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "canon/events.hpp"
+#include "core/source.hpp"
+
+namespace ncvm {
+
+enum class TimeKind : uint8_t { Rapid, Cutting, Dwell, Auxiliary };
+constexpr int kTimeKinds = 4;
+const char* timeKindName(TimeKind k);
+
+struct TimePair {
+  double model = 0, simple = 0;
+  void add(double m, double s) { model += m, simple += s; }
+};
+
+struct ToolTime {
+  int tool = 0;
+  TimePair time;
+};
+
+struct OperationTime {
+  int tool = 0;
+  EventOrigin first;  // the block that started it (tool change), or the program start
+  TimePair time;
+  double rapidLength = 0, feedLength = 0;
+  std::array<TimePair, kTimeKinds> byKind{};
+};
+
+struct LineTime {
+  EventOrigin at;
+  uint64_t count = 0;
+  TimePair time;
+};
+
+// Peck drilling seen in the moves: a peck is a feed move along -Z only; a full retract is a
+// rapid back to (or above) the level the hole's first peck started from, between two pecks
+// of the same hole (the final retract out of the hole is not counted).
+struct DrillStats {
+  uint64_t holes = 0, pecks = 0, fullRetracts = 0;
+};
+
+class TimeReport {
+ public:
+  void addMove(const MoveEvent& e, double model, double simple);
+  void add(TimeKind kind, const EventOrigin& at, double model, double simple);
+  void toolSelected(int tool, const EventOrigin& at);
+
+  const TimePair& total() const { return total_; }
+  const TimePair& byKind(TimeKind k) const { return byKind_[static_cast<size_t>(k)]; }
+  const std::vector<OperationTime>& operations() const { return ops_; }
+  const DrillStats& drilling() const { return drill_; }
+  std::vector<ToolTime> byTool() const;
+  std::vector<LineTime> topLines(size_t n) const;
+
+  nlohmann::json toJson(const SourceFiles& files, bool dynamic, size_t topN = 10) const;
+
+ private:
+  OperationTime& op();
+  void trackDrilling(const MoveEvent& e);
+
+  TimePair total_;
+  std::array<TimePair, kTimeKinds> byKind_{};
+  std::vector<OperationTime> ops_;
+  int tool_ = 0;
+  // Per file, per line (lines are dense: a vector, not a map); file and line are the indexes.
+  struct LineSlot {
+    const std::string* programName = nullptr;
+    int32_t n = -1;
+    uint32_t count = 0;
+    TimePair time;
+  };
+  std::vector<std::vector<LineSlot>> lines_;
+  // Drilling state.
+  DrillStats drill_;
+  bool inHole_ = false, retractedToTop_ = false;
+  double holeX_ = 0, holeY_ = 0, holeTop_ = 0;
+};
+
+}  // namespace ncvm

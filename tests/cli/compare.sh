@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# `ncvm compare`: the seed-000 deep-hole study (G83 Q7. against O9503 with the paper's
+# arguments, examples/deep-hole-o9503) on the 0i-MF preset: pecks, full retracts and the
+# time difference; exit codes as for run.
+set -u
+ncvm=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; cat "$tmp/out" 2>/dev/null; exit 1; }
+ex="$src/examples/deep-hole-o9503"
+
+"$ncvm" compare "$ex/g83-mill.nc" "$ex/o9503-mill.nc" --setup "$src/presets/fanuc-0i-mf.toml" >"$tmp/out" ||
+  fail "compare exit $?"
+# G83 Q7.: 7 pecks, back to R after each but the last; O9503: 12 pecks, H3 = every third.
+grep -qE '^pecks +7 +12 +\+5 ' "$tmp/out" || fail "pecks"
+grep -qE '^full retracts +6 +3 +-3 ' "$tmp/out" || fail "full retracts"
+grep -qE '^  dwell, s +0\.000 +0\.807 ' "$tmp/out" || fail "dwell (12 x 2 rev + 3 x 5 rev at 2900 rpm)"
+grep -qE '^cycle time \(length/feed\), s +11\.313 +13\.606 ' "$tmp/out" || fail "simple times"
+grep -qE '^cycle time \(modelled\), s ' "$tmp/out" || fail "modelled time row"
+grep -qE '^B is [0-9.]+ s \([0-9.]+%\) (slower|faster) than A$' "$tmp/out" || fail "verdict line"
+
+"$ncvm" compare "$ex/g83-mill.nc" "$ex/o9503-mill.nc" --setup "$src/presets/fanuc-0i-mf.toml" --json >"$tmp/out" ||
+  fail "compare --json exit $?"
+grep -q '"full_retracts": -3' "$tmp/out" || fail "json difference of full retracts"
+
+# Without a setup the simple model is compared (no modelled row).
+"$ncvm" compare "$ex/g83-mill.nc" "$ex/o9503-mill.nc" >"$tmp/out" || fail "simple compare exit $?"
+grep -q 'modelled' "$tmp/out" && fail "simple compare shows a modelled time"
+
+# Exit codes: 3 when a program alarms (its alarm line is printed), 2 on usage errors.
+"$ncvm" compare "$src/tests/cli/ok.nc" "$src/tests/cli/alarm.nc" >"$tmp/out"; rc=$?
+[ $rc = 3 ] || fail "alarm exit $rc"
+grep -qE 'alarm.nc:3:[0-9]+: PS0112' "$tmp/out" || fail "alarm line"
+"$ncvm" compare "$src/tests/cli/ok.nc" >"$tmp/out" 2>&1; rc=$?
+[ $rc = 2 ] || fail "one program exit $rc"
+"$ncvm" compare "$src/tests/cli/ok.nc" "$src/tests/cli/ok.nc" --setup "$tmp/missing.toml" >"$tmp/out" 2>&1; rc=$?
+[ $rc = 2 ] || fail "missing setup exit $rc"
+echo "cli compare: ok"
