@@ -274,7 +274,10 @@ nlohmann::json LatheStock::writeOutputs(const std::string& dir, const ClipperLib
         "<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" fill=\"none\" "
         "stroke=\"#333\"/>\n",
         mx, my, PW - 2 * mx, PH - 2 * my);
-    for (double v : {dmax, tol_, 0.0, -tol_, -dmax})
+    // The tolerance labels only where they do not run into the zero label.
+    std::vector<double> ticks{dmax, 0.0, -dmax};
+    if (Y(-tol_) - Y(0) > 12) ticks.insert(ticks.end(), {tol_, -tol_});
+    for (double v : ticks)
       p += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"end\">{:+.4f}</text>\n",
                        mx - 4, Y(v) + 4, v);
     std::string pts;
