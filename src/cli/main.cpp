@@ -51,6 +51,12 @@ void loadPrograms(Session& session, const CommonOptions& o) {
   if (!o.noMacros) session.addBundledMacros();
 }
 
+// Program text may hold bytes that are not UTF-8 (comments, names): the reports replace
+// them with U+FFFD instead of failing.
+std::string dumpJson(const nlohmann::json& j) {
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 std::string alarmLine(const Alarm& a, const SourceFiles& files) {
   std::string s = fmt::format("{}:{}:{}: {} {}", files.name(a.loc.file), a.loc.line, a.loc.col, a.code, a.text);
   if (a.n) s += fmt::format(" (N{})", *a.n);
@@ -88,13 +94,13 @@ int runCommand(const CommonOptions& o, const std::string& tracePath, const std::
   }
   Session::Result r = session.run(trace.get(), haveMemory ? &memory : nullptr);
   // The control keeps its memory whatever way the run ended, alarms included.
-  if (!machineStatePath.empty()) writeFileAtomic(machineStatePath, r.machineState.dump(2) + "\n");
+  if (!machineStatePath.empty()) writeFileAtomic(machineStatePath, dumpJson(r.machineState) + "\n");
   if (trace) {
     trace->flush();
     trace.reset();
     traceFile->commit();
   }
-  if (!statePath.empty()) writeFileAtomic(statePath, r.state.dump(2) + "\n");
+  if (!statePath.empty()) writeFileAtomic(statePath, dumpJson(r.state) + "\n");
   std::string out = !outputPath.empty() ? outputPath : session.setup().dprntPath;
   if (!r.printed.empty()) {
     if (out.empty())
@@ -128,7 +134,7 @@ int checkCommand(const CommonOptions& o, bool json) {
   loadPrograms(session, o);
   nlohmann::json report = session.check();
   if (json) {
-    fmt::print("{}\n", report.dump(2));
+    fmt::print("{}\n", dumpJson(report));
   } else {
     for (const char* kind : {"alarms", "warnings"})
       for (const auto& a : report[kind])
