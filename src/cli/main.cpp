@@ -65,6 +65,12 @@ void loadPrograms(Session& session, const CommonOptions& o) {
   if (!o.noMacros) session.addBundledMacros();
 }
 
+// Program text may hold bytes that are not UTF-8 (comments, names): the reports replace
+// them with U+FFFD instead of failing.
+std::string dumpJson(const nlohmann::json& j) {
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 std::string alarmLine(const Alarm& a, const SourceFiles& files) {
   std::string s = fmt::format("{}:{}:{}: {} {}", files.name(a.loc.file), a.loc.line, a.loc.col, a.code, a.text);
   if (a.n) s += fmt::format(" (N{})", *a.n);
@@ -118,13 +124,13 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
   }
   Session::Result r = session.run(trace.get(), haveMemory ? &memory : nullptr);
   // The control keeps its memory whatever way the run ended, alarms included.
-  if (!machineStatePath.empty()) writeFileAtomic(machineStatePath, r.machineState.dump(2) + "\n");
+  if (!machineStatePath.empty()) writeFileAtomic(machineStatePath, dumpJson(r.machineState) + "\n");
   if (trace) {
     trace->flush();
     trace.reset();
     traceFile->commit();
   }
-  if (!statePath.empty()) writeFileAtomic(statePath, r.state.dump(2) + "\n");
+  if (!statePath.empty()) writeFileAtomic(statePath, dumpJson(r.state) + "\n");
   if (!outs.report.empty()) {
     const Program* m = session.main();
     writeFileAtomic(outs.report, htmlReport(r.state, fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label), stockDir));
@@ -193,7 +199,7 @@ int compareCommand(const CommonOptions& o, const std::string& a, const std::stri
   ComparedRun ra = runOne(a, alarmA);
   ComparedRun rb = runOne(b, alarmB);
   if (json)
-    fmt::print("{}\n", compareJson(ra, rb, setup.timing.dynamic).dump(2));
+    fmt::print("{}\n", dumpJson(compareJson(ra, rb, setup.timing.dynamic)));
   else
     fmt::print("{}", compareText(ra, rb, setup.timing.dynamic));
   for (const auto* line : {&alarmA, &alarmB})
@@ -206,7 +212,7 @@ int checkCommand(const CommonOptions& o, bool json) {
   loadPrograms(session, o);
   nlohmann::json report = session.check();
   if (json) {
-    fmt::print("{}\n", report.dump(2));
+    fmt::print("{}\n", dumpJson(report));
   } else {
     for (const char* kind : {"alarms", "warnings"})
       for (const auto& a : report[kind])

@@ -211,6 +211,15 @@ void Executor::jumpTo(int32_t label, bool computed) {
   f.pc = static_cast<uint32_t>(t);
 }
 
+// A computed variable or sequence number, rounded. Values far outside every range are
+// clamped (llround of 1e300 is undefined) so the range alarm names a number, not garbage.
+static int64_t roundedIndex(double v) {
+  constexpr double kMax = 1e9;
+  return v > kMax    ? static_cast<int64_t>(kMax)
+         : v < -kMax ? -static_cast<int64_t>(kMax)
+                     : std::llround(v);
+}
+
 EndReason Executor::run(const Program& main) {
   try {
     enter(&main, FrameKind::Main, 1, false);
@@ -297,7 +306,7 @@ bool Executor::step() {
     case BlockKind::Assign: {
       Value v = eval(b.rhs);
       int64_t n = b.lhsVar;
-      if (b.lhsExpr >= 0) n = std::llround(eval(b.lhsExpr).asNumber());
+      if (b.lhsExpr >= 0) n = roundedIndex(eval(b.lhsExpr).asNumber());
       ++f.pc;
       writeVar(n, v);
       break;
@@ -308,16 +317,18 @@ bool Executor::step() {
       } else if (b.thenAssign) {
         Value v = eval(b.rhs);
         int64_t n = b.lhsVar;
-        if (b.lhsExpr >= 0) n = std::llround(eval(b.lhsExpr).asNumber());
+        if (b.lhsExpr >= 0) n = roundedIndex(eval(b.lhsExpr).asNumber());
         ++f.pc;
         writeVar(n, v);
       } else {
-        jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(std::llround(eval(b.gotoExpr).asNumber())) : b.gotoLabel,
+        jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(roundedIndex(eval(b.gotoExpr).asNumber()))
+                               : b.gotoLabel,
                b.gotoExpr >= 0);
       }
       break;
     case BlockKind::Goto:
-      jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(std::llround(eval(b.gotoExpr).asNumber())) : b.gotoLabel,
+      jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(roundedIndex(eval(b.gotoExpr).asNumber()))
+                             : b.gotoLabel,
              b.gotoExpr >= 0);
       break;
     case BlockKind::While:

@@ -17,6 +17,9 @@ constexpr size_t kMaxPrinted = 64u << 20;
 std::string formatDprnt(double v, int a, int b, bool prt) {
   double scale = std::pow(10.0, b);
   double rounded = std::round(std::fabs(v) * scale);
+  // Past 18 digits the value no longer fits the control's integer output (and would
+  // overflow the conversion below).
+  if (!(rounded < 9.0e18)) throw AlarmError(AlarmId::IntegerOverflow, "DPRNT value too large");
   bool negative = v < 0 && rounded != 0;
   auto whole = static_cast<int64_t>(std::floor(rounded / scale));
   auto frac = static_cast<int64_t>(rounded - static_cast<double>(whole) * scale);
@@ -37,23 +40,26 @@ std::string formatDprnt(double v, int a, int b, bool prt) {
 void Executor::print(const Block& b) {
   const Program& p = *frames_.back().prog;
   bool prt = setup_.prt();
+  // The line is built whole first: an alarm in one of its items prints nothing of it.
+  std::string line;
   for (uint32_t k = 0; k < b.nPrint; ++k) {
     const PrintItem& item = p.prints[b.firstPrint + k];
     if (!item.isVar) {
-      printed_ += item.text;
+      line += item.text;
       continue;
     }
     double v = eval(item.expr).asNumber();  // a vacant variable prints as 0
     if (b.printKind == PrintKind::Dprnt) {
-      printed_ += formatDprnt(v, item.intDigits, item.fracDigits, prt);
+      line += formatDprnt(v, item.intDigits, item.fracDigits, prt);
     } else {
       // BPRNT: value x 10^b as a 32-bit binary number, high byte first.
       double scaled = std::round(v * std::pow(10.0, item.fracDigits));
       if (std::fabs(scaled) > 2147483647.0) throw AlarmError(AlarmId::IntegerOverflow, "BPRNT value");
       auto u = static_cast<uint32_t>(static_cast<int32_t>(scaled));
-      for (int s = 24; s >= 0; s -= 8) printed_ += static_cast<char>((u >> s) & 0xFF);
+      for (int s = 24; s >= 0; s -= 8) line += static_cast<char>((u >> s) & 0xFF);
     }
   }
+  printed_ += line;
   printed_ += '\n';
   if (printed_.size() > kMaxPrinted) throw AlarmError(AlarmId::OutputError, "DPRNT output over 64 MiB");
 }

@@ -1,5 +1,7 @@
 #include "lang/parser.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstring>
@@ -209,7 +211,9 @@ void Compiler::parseBlock(size_t b, size_t e) {
       uint32_t at = col();
       int64_t n = 0;
       int digits = 0;
-      while (isDigit(peek())) n = n * 10 + (peek() - '0'), ++i_, ++digits;
+      // The value saturates: more than 8 digits is an alarm anyway.
+      while (isDigit(peek()))
+        n = std::min<int64_t>(n * 10 + (peek() - '0'), 999999999), ++i_, ++digits;
       if (peek() == '.') fail(AlarmId::IllegalDecimalPoint, "in N", at);
       if (digits > 8) fail(AlarmId::TooManyDigits, "N", at);
       blk_.n = static_cast<int32_t>(n);
@@ -240,13 +244,16 @@ bool Compiler::parseHeader() {
   if (numbered) {
     ++i_;
     int64_t n = 0;
-    int digits = 0;
-    while (isDigit(peek())) n = n * 10 + (peek() - '0'), ++i_, ++digits;
+    size_t first = i_;
     int64_t max = opt_.eightDigitO ? 99999999 : 9999;
+    // Past the limit the value no longer matters (and would overflow): it stays max + 1.
+    while (isDigit(peek())) n = std::min(n * 10 + (peek() - '0'), max + 1), ++i_;
     // Four digits is the classic limit; leading zeros do not count.
     if (n == 0 || n > max) {
       startProgram(-1, std::string(stem_), loc);
-      fail(AlarmId::ProgramNumberOutOfRange, "O" + std::to_string(n), loc.col);
+      std::string digits(s_.substr(first, std::min<size_t>(i_ - first, 20)));
+      fail(AlarmId::ProgramNumberOutOfRange, "O" + digits + (i_ - first > 20 ? "..." : ""),
+           loc.col);
     }
     startProgram(static_cast<int32_t>(n), {}, loc);
   } else {
@@ -347,7 +354,13 @@ void Compiler::parseStatements() {
     } else if (isLower(c)) {
       fail(AlarmId::ImproperAddress, std::string("lower-case '") + c + "'", at);
     } else {
-      fail(AlarmId::ImproperAddress, std::string("unexpected '") + c + "'", at);
+      // A byte that is not printable ASCII is named by its code: the alarm text must stay
+      // readable (and valid UTF-8 in the JSON reports).
+      bool printable = c > ' ' && c < 0x7f;
+      fail(AlarmId::ImproperAddress,
+           printable ? std::string("unexpected '") + c + "'"
+                     : fmt::format("unexpected byte 0x{:02X}", static_cast<unsigned char>(c)),
+           at);
     }
   }
 }
@@ -831,6 +844,9 @@ Type Compiler::parsePrimary() {
     bool hasPoint = false;
     int intDigits = 0;
     double v = parseNumberText(hasPoint, intDigits);
+    // A constant longer than a double holds exactly (1 and 300 zeros) is no real program's:
+    // the control stops at its digit limit; ncvm allows 15 integer digits.
+    if (intDigits > 15) fail(AlarmId::TooManyDigits, "constant with more than 15 digits", at);
     emit(Op::Const, at, addConst(v));
     return Type::Num;
   }

@@ -40,15 +40,33 @@ std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
   ec.clear();
   auto size = std::filesystem::file_size(path, ec);
   if (ec) throw std::runtime_error(fmt::format("{}: cannot read: {}", path, ec.message()));
-  if (size > maxFileBytes_)
-    throw std::runtime_error(fmt::format("{}: {} bytes is more than limits.max_file_bytes ({})", path,
-                                         size, maxFileBytes_));
+  if (size > maxFileBytes_) return addTooLarge(path, size);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("{}: cannot open", path));
   std::string text(size, '\0');
   in.read(text.data(), static_cast<std::streamsize>(size));
   text.resize(static_cast<size_t>(in.gcount()));
   return addText(text, path);
+}
+
+// A file over limits.max_file_bytes is not read: like a control whose memory is full, it
+// becomes one program whose only block raises PS9005 when it runs (or is checked).
+std::vector<const Program*> ProgramStore::addTooLarge(const std::string& path, uintmax_t size) {
+  Program p;
+  p.name = std::filesystem::path(path).stem().string();
+  p.loc = SourceLoc{files_.add(path), 1, 1};
+  p.label = p.displayName();
+  p.errors.push_back(Alarm{alarmCode(AlarmId::ProgramTooLarge),
+                           fmt::format("{} ({} bytes; limits.max_file_bytes = {})",
+                                       alarmMessage(AlarmId::ProgramTooLarge), size, maxFileBytes_),
+                           p.loc, std::nullopt, -1});
+  Block b;
+  b.kind = BlockKind::Error;
+  b.loc = p.loc;
+  b.error = 0;
+  p.blocks.push_back(b);
+  programs_.push_back(std::move(p));
+  return {&programs_.back()};
 }
 
 void ProgramStore::addFolder(const std::string& dir) {

@@ -2,6 +2,7 @@
 // Every program ncvm can run or call: the files named on the command line, then library
 // folders (--lib), then the bundled macros/ folder. The first program with a number or
 // name wins; later duplicates are reported as warnings.
+#include <cstdint>
 #include <deque>
 #include <string>
 #include <string_view>
@@ -20,7 +21,8 @@ class ProgramStore {
       : files_(files), options_(options), maxFileBytes_(maxFileBytes) {}
 
   // Loads and compiles a file. Returns its programs in file order. Throws
-  // std::runtime_error when the file cannot be read or is larger than the limit.
+  // std::runtime_error when the file cannot be read; a file larger than the limit becomes
+  // a program that raises PS9005.
   std::vector<const Program*> addFile(const std::string& path);
   // Same for text already in memory (tests, the server).
   std::vector<const Program*> addText(std::string_view text, const std::string& name);
@@ -34,6 +36,8 @@ class ProgramStore {
   SourceFiles& files() { return files_; }
 
  private:
+  std::vector<const Program*> addTooLarge(const std::string& path, uintmax_t size);
+
   SourceFiles& files_;
   ParseOptions options_;
   uint64_t maxFileBytes_;

@@ -1,0 +1,76 @@
+#pragma once
+// Checks that a compiled program is self-consistent: every index the executor follows
+// (words, expressions, bytecode, constants, strings, errors, jump targets, loop parents)
+// stays inside its array. The fuzz targets abort on a violation, so a compiler bug that
+// would make the executor read out of bounds is found at compile time already.
+#include <cstdio>
+#include <cstdlib>
+
+#include "lang/ir.hpp"
+
+namespace ncvm::fuzz {
+
+[[noreturn]] inline void violated(const char* what, size_t block) {
+  std::fprintf(stderr, "IR invariant violated: %s (block %zu)\n", what, block);
+  std::abort();
+}
+
+inline void checkProgram(const Program& p) {
+  const size_t nb = p.blocks.size();
+  auto expr = [&](int32_t e, size_t k) {
+    if (e < 0) return;
+    if (static_cast<size_t>(e) >= p.exprs.size()) violated("expression index", k);
+    const ExprRange& r = p.exprs[static_cast<size_t>(e)];
+    if (r.begin > r.end || r.end > p.code.size()) violated("expression range", k);
+    for (uint32_t i = r.begin; i < r.end; ++i)
+      if (p.code[i].op == Op::Const &&
+          (p.code[i].arg < 0 || static_cast<size_t>(p.code[i].arg) >= p.consts.size()))
+        violated("constant index", k);
+  };
+  for (size_t k = 0; k < nb; ++k) {
+    const Block& b = p.blocks[k];
+    if (static_cast<size_t>(b.firstWord) + b.nWords > p.words.size()) violated("word range", k);
+    for (uint32_t w = 0; w < b.nWords; ++w) {
+      const Word& wd = p.words[b.firstWord + w];
+      if (wd.kind == WordKind::Expr) expr(wd.a, k);
+    }
+    expr(b.cond, k);
+    expr(b.lhsExpr, k);
+    expr(b.rhs, k);
+    expr(b.gotoExpr, k);
+    if (b.comment >= 0 && static_cast<size_t>(b.comment) >= p.strings.size())
+      violated("comment", k);
+    if (static_cast<size_t>(b.firstPrint) + b.nPrint > p.prints.size()) violated("print range", k);
+    for (uint32_t i = 0; i < b.nPrint; ++i) {
+      const PrintItem& it = p.prints[b.firstPrint + i];
+      if (it.isVar) expr(it.expr, k);
+    }
+    if (b.kind == BlockKind::Error &&
+        (b.error < 0 || static_cast<size_t>(b.error) >= p.errors.size()))
+      violated("error index", k);
+    if (b.kind == BlockKind::Assign && b.lhsVar < 0 && b.lhsExpr < 0)
+      violated("assignment target", k);
+    if (b.loopParent >= 0 && (static_cast<size_t>(b.loopParent) >= nb ||
+                              p.blocks[static_cast<size_t>(b.loopParent)].kind != BlockKind::While))
+      violated("loop parent", k);
+    // Jump targets are only guaranteed when the program has no structural error (the
+    // control refuses to run it otherwise).
+    if (p.structural.empty()) {
+      if (b.kind == BlockKind::While && (b.target < 0 || static_cast<size_t>(b.target) > nb))
+        violated("WHILE target", k);
+      if (b.kind == BlockKind::End &&
+          (b.target < 0 || static_cast<size_t>(b.target) >= nb ||
+           p.blocks[static_cast<size_t>(b.target)].kind != BlockKind::While))
+        violated("END target", k);
+      bool literalJump =
+          (b.kind == BlockKind::Goto || (b.kind == BlockKind::If && !b.thenAssign)) &&
+          b.gotoExpr < 0 && b.gotoLabel >= 0;
+      if (literalJump && (b.target < 0 || static_cast<size_t>(b.target) >= nb))
+        violated("GOTO target", k);
+    }
+  }
+  for (const auto& [n, index] : p.labels)
+    if (index >= nb) violated("label index", index);
+}
+
+}  // namespace ncvm::fuzz
