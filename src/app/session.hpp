@@ -2,6 +2,7 @@
 // One verification job as a library call: load the programs, run or check the main one,
 // and build the state and check reports. The CLI, the golden tests and (later) the server
 // all go through here.
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -52,7 +53,13 @@ class Session {
   // decimal-point and duplicate-word warnings, for the programs of the given files.
   nlohmann::json check() const;
 
+  // Lets a sink read the control while it runs (the web viewer's per-step snapshots):
+  // called once with the executor before the first block; the executor lives until run()
+  // returns.
+  void setInspector(std::function<void(Executor&)> f) { inspector_ = std::move(f); }
+
  private:
+  std::function<void(Executor&)> inspector_;
   Setup setup_;
   SourceFiles files_;
   ProgramStore store_;
@@ -61,5 +68,7 @@ class Session {
 };
 
 nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);
+// The `modal` object of the state report (docs/trace-format.md).
+nlohmann::json modalJson(const ModalState& m, const Setup& setup);
 
 }  // namespace ncvm
