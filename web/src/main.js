@@ -169,7 +169,7 @@ $('back').addEventListener('click', () => step(-1));
 $('run').addEventListener('click', run);
 document.addEventListener('keydown', (e) => {
   if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) run();
-  if (e.target.tagName === 'TEXTAREA') return;
+  if (['TEXTAREA', 'INPUT', 'SELECT'].includes(e.target.tagName)) return;
   if (e.key === 'ArrowRight') step(1);
   if (e.key === 'ArrowLeft') step(-1);
 });

@@ -151,3 +151,15 @@ export function timeBreakdown(model) {
   }
   return t;
 }
+
+// Time per tool: moves and dwells counted against the tool in the spindle (the last M06 on a
+// mill, the last T on a lathe, whose turret indexes with T); "T0" before the first.
+export function timeByTool(model) {
+  const t = {};
+  let tool = 'T0';
+  for (const e of model.events) {
+    if (e.type === 'tool' && (e.change || model.lathe)) tool = `T${e.tool}`;
+    if (e.type === 'move' || e.type === 'dwell') t[tool] = (t[tool] || 0) + e.time;
+  }
+  return t;
+}

@@ -1,7 +1,7 @@
 // The side panels: position page, macro variables, offsets, modal state, messages and
 // alarms, cycle time. Each render function fills one element from the model and the step.
 import { escapeHtml } from './highlight.js';
-import { timeBreakdown } from './model.js';
+import { timeBreakdown, timeByTool } from './model.js';
 
 const fmt = (v, d = 3) => (typeof v === 'number' ? v.toFixed(d) : v ?? '');
 
@@ -111,6 +111,8 @@ export function renderTime(el, model) {
   const t = timeBreakdown(model);
   let html = `<p class="cycle">Cycle time <b id="cycle-time">${fmt(total, 2)} s</b> (${hms(total)})</p>`;
   html += '<h3>By motion (trace)</h3>' + bars(Object.entries(t), total);
+  const byTool = Object.entries(timeByTool(model));
+  if (byTool.length > 1 || (byTool.length === 1 && byTool[0][0] !== 'T0')) html += '<h3>By tool (trace)</h3>' + bars(byTool, total);
   for (const [key, v] of Object.entries(s))
     if (key !== 'cycle_time' && /time/i.test(key) && v && typeof v === 'object') {
       const nums = Object.entries(v).filter(([, x]) => typeof x === 'number');

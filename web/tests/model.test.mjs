@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { tokenize } from '../src/highlight.js';
-import { buildModel, toolAt, timeBreakdown } from '../src/model.js';
+import { buildModel, toolAt, timeBreakdown, timeByTool } from '../src/model.js';
 
 const kinds = (line) => tokenize(line).filter((t) => t.cls !== 'ws').map((t) => `${t.cls}:${t.text}`);
 
@@ -51,6 +51,13 @@ test('timeline model', () => {
   const a = toolAt(m, 1.5);
   assert.ok(Math.abs(a.work[0] - 15) < 0.01 && Math.abs(a.work[1] - 5) < 0.01, `${a.work}`);
   assert.deepEqual(timeBreakdown(m), { rapid: 0, feed: 2, thread: 0, dwell: 2 });
+  assert.deepEqual(timeByTool(m), { T0: 4 });
+  const withTool = buildModel({
+    ...answer,
+    trace: JSON.stringify({ type: 'tool', file: 'p.nc', line: 1, n: null, prog: 'O1', tool: 5, change: true }) + '\n' + answer.trace,
+    steps: [{}, ...answer.steps],
+  });
+  assert.deepEqual(timeByTool(withTool), { T5: 4 });
 });
 
 test('a lathe arc is round in radius, X given as a diameter', () => {
