@@ -79,6 +79,12 @@ WebServer::WebServer(ServerConfig config)
   int threads = c.threads > 0 ? c.threads : 1;
   s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
   s.set_payload_max_length(c.maxBodyBytes);
+  // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which lets a second server
+  // listen on the same port and silently take half of the connections.
+  s.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   s.set_read_timeout(10, 0);
   s.set_write_timeout(30, 0);
 
