@@ -1,5 +1,5 @@
 # The two set-up commands of the README: `make demo` and `make test`.
-.PHONY: demo test test-asan bench build deps format clean
+.PHONY: demo serve test test-asan bench build deps format clean
 
 deps:
 	@scripts/install-deps
@@ -10,6 +10,9 @@ build: deps
 
 demo: build
 	@scripts/demo
+
+serve: build
+	@build/release/bin/ncvm serve
 
 test: build
 	@ctest --preset release

@@ -77,6 +77,23 @@ nlohmann::json axesJson(const AxisArray& a, int n) {
 }
 }  // namespace
 
+nlohmann::json modalJson(const ModalState& m, const Setup& setup) {
+  nlohmann::json modal = nlohmann::json::object();
+  for (int g = 1; g < kGroups; ++g) {
+    bool known = false;
+    for (const auto& info : gcodeTable())
+      known |= (info.seriesMask & seriesBit(setup.series())) && info.group == g;
+    if (known) modal[std::to_string(g)] = m.g[static_cast<size_t>(g)] / 10.0;
+  }
+  modal["F"] = m.feed;
+  modal["S"] = m.speed;
+  modal["T"] = m.tool;
+  modal["D"] = m.dOffset;
+  modal["H"] = m.hOffset;
+  modal["units"] = m.unit == InputUnit::Inch ? "inch" : "mm";
+  return modal;
+}
+
 Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState) {
   Result r;
   std::optional<Alarm> late;
@@ -105,6 +122,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     exec.memory() = mem;
     exec.restartFromMemory();
   }
+  if (inspector_) inspector_(exec);
   r.end = exec.run(*main_);
   if (stage) {
     try {
@@ -133,21 +151,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   s["program"] = main_->label;
   int axes = setup_.reportedAxes();
   s["position"] = {{"work", axesJson(exec.workPosition(), axes)}, {"machine", axesJson(exec.machinePosition(), axes)}};
-  nlohmann::json modal = nlohmann::json::object();
-  const ModalState& m = exec.modal();
-  for (int g = 1; g < kGroups; ++g) {
-    bool known = false;
-    for (const auto& info : gcodeTable())
-      known |= (info.seriesMask & seriesBit(setup_.series())) && info.group == g;
-    if (known) modal[std::to_string(g)] = m.g[static_cast<size_t>(g)] / 10.0;
-  }
-  modal["F"] = m.feed;
-  modal["S"] = m.speed;
-  modal["T"] = m.tool;
-  modal["D"] = m.dOffset;
-  modal["H"] = m.hOffset;
-  modal["units"] = m.unit == InputUnit::Inch ? "inch" : "mm";
-  s["modal"] = modal;
+  s["modal"] = modalJson(exec.modal(), setup_);
   nlohmann::json vars = nlohmann::json::object();
   for (const auto& [n, v] : exec.userVariables()) vars["#" + std::to_string(n)] = v;
   s["vars"] = vars;

@@ -2,6 +2,7 @@
 // One verification job as a library call: load the programs, run or check the main one,
 // and build the state and check reports. The CLI, the golden tests and (later) the server
 // all go through here.
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -66,8 +67,13 @@ class Session {
 
   // The cycle-time stage runs by default (setup [timing]); off only for measurements.
   void setTiming(bool on) { timing_ = on; }
+  // Lets a sink read the control while it runs (the web viewer's per-step snapshots):
+  // called once with the executor before the first block; the executor lives until run()
+  // returns.
+  void setInspector(std::function<void(Executor&)> f) { inspector_ = std::move(f); }
 
  private:
+  std::function<void(Executor&)> inspector_;
   Setup setup_;
   SourceFiles files_;
   ProgramStore store_;
@@ -79,5 +85,7 @@ class Session {
 };
 
 nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);
+// The `modal` object of the state report (docs/trace-format.md).
+nlohmann::json modalJson(const ModalState& m, const Setup& setup);
 
 }  // namespace ncvm

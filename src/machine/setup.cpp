@@ -499,6 +499,20 @@ Setup defaultSetup(MachineKind kind) {
   return s;
 }
 
+Setup parseSetup(std::string_view text, const std::string& name) {
+  Setup s = defaultSetup();
+  toml::table t;
+  try {
+    t = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    throw SetupError(fmt::format("{}:{}:{}: {}", name, e.source().begin.line, e.source().begin.column,
+                                 e.description()),
+                     "", static_cast<int>(e.source().begin.line));
+  }
+  walk(s, t, "");
+  return s;
+}
+
 Setup loadSetup(const std::string& path) {
   Setup s = defaultSetup();
   loadSetupInto(s, path);

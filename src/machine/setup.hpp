@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -175,6 +176,8 @@ Setup defaultSetup(MachineKind kind = MachineKind::Mill);
 Setup loadSetup(const std::string& path);
 // Applies a setup file on top of `setup` (several --setup files: a preset, then the job).
 void loadSetupInto(Setup& setup, const std::string& path);
+// The same from the text of a setup file; `name` stands for the file in error messages.
+Setup parseSetup(std::string_view text, const std::string& name);
 // Applies "KEY=VALUE": a Fanuc parameter ("3401#0=1", "DPI=1") or a setup key
 // ("machine.kind=lathe", "block_skip.1=true", "limits.max_blocks=50", "vars.#500=2").
 void applySetting(Setup& setup, const std::string& assignment);

@@ -1,0 +1,93 @@
+#include "server/run_job.hpp"
+
+#include <algorithm>
+
+#include "app/session.hpp"
+#include "exec/executor.hpp"
+#include "server/step_recorder.hpp"
+
+namespace ncvm::server {
+
+nlohmann::json capsJson(const RunCaps& caps) {
+  return {{"max_program_bytes", caps.maxProgramBytes},
+          {"max_blocks", caps.maxBlocks},
+          {"max_sim_seconds", caps.maxSimSeconds},
+          {"max_trace_bytes", caps.maxTraceBytes}};
+}
+
+namespace {
+
+RunCaps capsFrom(const nlohmann::json& j) {
+  RunCaps c;
+  if (!j.is_object()) return c;
+  c.maxProgramBytes = j.value("max_program_bytes", c.maxProgramBytes);
+  c.maxBlocks = j.value("max_blocks", c.maxBlocks);
+  c.maxSimSeconds = j.value("max_sim_seconds", c.maxSimSeconds);
+  c.maxTraceBytes = j.value("max_trace_bytes", c.maxTraceBytes);
+  return c;
+}
+
+nlohmann::json failure(const std::string& message) {
+  return {{"ok", false}, {"error", message}};
+}
+
+}  // namespace
+
+nlohmann::json runJob(const nlohmann::json& request) {
+  if (!request.is_object() || !request.contains("program") || !request["program"].is_string())
+    return failure("the request needs \"program\": the program text");
+  const std::string& text = request["program"].get_ref<const std::string&>();
+  RunCaps caps = capsFrom(request.value("caps", nlohmann::json()));
+  if (text.size() > caps.maxProgramBytes)
+    return failure("program too large: " + std::to_string(text.size()) +
+                   " bytes, the server accepts " + std::to_string(caps.maxProgramBytes));
+  std::string name = request.value("name", std::string("program.nc"));
+  if (name.empty() || name.size() > 255) name = "program.nc";
+
+  try {
+    Setup setup = defaultSetup();
+    if (request.contains("setup") && request["setup"].is_string())
+      setup = parseSetup(request["setup"].get_ref<const std::string&>(),
+                         request.value("setup_name", "setup.toml"));
+    // The server's caps bound whatever the setup asks for.
+    Limits& lim = setup.limits;
+    lim.maxBlocks = std::min(lim.maxBlocks, caps.maxBlocks);
+    lim.maxTimeSeconds = std::min(lim.maxTimeSeconds, caps.maxSimSeconds);
+    lim.maxTraceBytes = std::min(lim.maxTraceBytes, caps.maxTraceBytes);
+    lim.maxFileBytes = std::min(lim.maxFileBytes, caps.maxProgramBytes);
+
+    Session session(setup);
+    session.addProgramText(text, name);
+    if (!session.main()) return failure("no program in the text");
+    if (request.contains("libs") && request["libs"].is_array())
+      for (const auto& dir : request["libs"])
+        if (dir.is_string()) session.addLibrary(dir.get<std::string>());
+    session.addBundledMacros();
+
+    StepRecorder recorder(session.files(), session.setup(), session.setup().limits.maxTraceBytes);
+    session.setInspector([&](Executor& e) { recorder.attach(&e); });
+    Session::Result r = session.run(&recorder);
+    recorder.attach(nullptr);
+
+    nlohmann::json out;
+    out["ok"] = true;
+    out["name"] = name;
+    out["state"] = std::move(r.state);
+    out["trace"] = recorder.trace();
+    out["steps"] = std::move(recorder.steps());
+    out["check"] = session.check();
+    out["printed"] = r.printed;
+    out["load_warnings"] = session.store().warnings();
+    out["machine"] = {{"kind", session.setup().kind == MachineKind::Lathe ? "lathe" : "mill"},
+                      {"axes", session.setup().reportedAxes()}};
+    // Hook for the stock simulation (issue 8): when the run produces a stock, it goes into
+    // out["stock"] and the viewer draws it (web/src/stock.js describes the format).
+    return out;
+  } catch (const SetupError& e) {
+    return failure(std::string("setup error: ") + e.what());
+  } catch (const std::exception& e) {
+    return failure(e.what());
+  }
+}
+
+}  // namespace ncvm::server

@@ -1,0 +1,29 @@
+#pragma once
+// One run for the web viewer, as JSON in and JSON out: the program text and its setup go
+// through a fresh Session; the answer holds the trace, the per-event steps, the final state
+// and the check report. It runs inside a worker process (worker.hpp), so a request never
+// shares a control, variables or memory with another.
+#include <cstdint>
+#include <nlohmann/json.hpp>
+
+namespace ncvm::server {
+
+// The server's caps. A setup may ask for less, never for more.
+struct RunCaps {
+  uint64_t maxProgramBytes = 1u << 20;
+  uint64_t maxBlocks = 2'000'000;
+  double maxSimSeconds = 360'000.0;  // simulated machine time
+  uint64_t maxTraceBytes = 64u << 20;
+};
+
+// The request (built by the server, never taken from a client as is):
+//   {"program": TEXT, "name": FILE NAME, "setup": TOML TEXT or null, "setup_name": NAME,
+//    "libs": [FOLDER...], "caps": {"max_program_bytes", "max_blocks", "max_sim_seconds",
+//    "max_trace_bytes"}}
+// The answer: {"ok": true, "state", "trace" (JSON Lines text), "steps", "check", "printed",
+// "machine": {"kind", "axes"}} or {"ok": false, "error": MESSAGE} for a setup or load error.
+nlohmann::json runJob(const nlohmann::json& request);
+
+nlohmann::json capsJson(const RunCaps& caps);
+
+}  // namespace ncvm::server

@@ -1,0 +1,49 @@
+#pragma once
+// `ncvm serve`: the web viewer's HTTP server (cpp-httplib). It serves the built front end
+// (web/), lists and reads programs of its roots, and runs programs, each run in its own
+// worker process with the caps of RunCaps and WorkerLimits. Bound to 127.0.0.1 unless told
+// otherwise; on a loopback address it also refuses requests whose Host or Origin is not a
+// loopback name, so that a web page elsewhere cannot drive it through DNS rebinding.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "server/file_catalog.hpp"
+#include "server/run_job.hpp"
+#include "server/worker.hpp"
+
+namespace ncvm::server {
+
+struct ServerConfig {
+  std::string bind = "127.0.0.1";
+  int port = 8765;        // 0: any free port (see WebServer::bind)
+  std::string webDir;     // the built front end: index.html, assets/
+  FileCatalog catalog;    // the folders programs are read from
+  std::string setupText;  // the default setup (--setup), empty for ncvm's default
+  std::string setupName;
+  std::string startRoot, startPath;  // the program the page opens with (PROGRAM)
+  std::string workerExe;             // the ncvm binary (for `ncvm serve-worker`)
+  RunCaps caps;
+  WorkerLimits worker;
+  uint64_t maxBodyBytes = 2u << 20;  // a request
+  int threads = 8;                   // concurrent requests (and so concurrent runs)
+};
+
+class WebServer {
+ public:
+  explicit WebServer(ServerConfig config);
+  ~WebServer();
+  // Binds the socket; returns the port (the chosen one for port 0). Throws on failure.
+  int bind();
+  // Serves until stop(); call after bind().
+  void listen();
+  void stop();
+  const ServerConfig& config() const { return config_; }
+
+ private:
+  struct Impl;
+  ServerConfig config_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ncvm::server

@@ -1,0 +1,31 @@
+#pragma once
+// Each run of the web viewer happens in a child process (`ncvm serve-worker`): a runaway
+// program is killed at the wall-clock deadline, a crash or a memory blow-up ends only that
+// request, and concurrent tabs never share a control.
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+namespace ncvm::server {
+
+struct WorkerLimits {
+  std::chrono::milliseconds timeout{10'000};  // wall clock, per request
+  uint64_t maxOutputBytes = 256u << 20;       // the answer
+  uint64_t memoryBytes = 2ull << 30;          // address space of the child (RLIMIT_AS)
+};
+
+struct WorkerResult {
+  enum class Status { Ok, Timeout, Failed, TooLarge } status = Status::Failed;
+  std::string output;  // the child's answer (JSON) when Ok
+  std::string detail;  // why, otherwise
+};
+
+// Runs `exe serve-worker` with `input` on its stdin; returns what it wrote on stdout.
+WorkerResult runWorker(const std::string& exe, const std::string& input,
+                       const WorkerLimits& limits);
+
+// The child's side: reads the request from stdin, runs it (run_job.hpp), writes the answer.
+// `memoryBytes` caps its own address space first (0: no cap).
+int workerMain(uint64_t memoryBytes);
+
+}  // namespace ncvm::server

@@ -1,0 +1,325 @@
+// The web viewer's server (src/server): safe paths, one run as JSON, and the HTTP server on
+// loopback with concurrent clients, malformed and oversized requests, path traversal and a
+// runaway program.
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "server/run_job.hpp"
+#include "server/safe_path.hpp"
+#include "server/web_server.hpp"
+
+namespace fs = std::filesystem;
+using namespace ncvm::server;
+using nlohmann::json;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string t = (fs::temp_directory_path() / "ncvm-server-XXXXXX").string();
+    path = ::mkdtemp(t.data());
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+void write(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+}
+
+size_t countLines(const std::string& s) {
+  return static_cast<size_t>(std::count(s.begin(), s.end(), '\n'));
+}
+
+}  // namespace
+
+TEST(SafePath, RefusesEverythingOutsideTheRoot) {
+  TempDir root, outside;
+  write(root.path / "a" / "prog.nc", "O1\n");
+  write(outside.path / "secret.nc", "O2\n");
+  fs::create_symlink(outside.path / "secret.nc", root.path / "a" / "link.nc");
+  fs::create_symlink(outside.path, root.path / "dirlink");
+  fs::create_symlink(root.path / "a" / "prog.nc", root.path / "inner.nc");
+
+  EXPECT_TRUE(resolveInside(root.path, "a/prog.nc"));
+  EXPECT_TRUE(resolveInside(root.path, "inner.nc"));  // a symlink that stays inside
+  EXPECT_TRUE(resolveInside(root.path, ""));
+  EXPECT_FALSE(resolveInside(root.path, "../" + outside.path.filename().string() + "/secret.nc"));
+  EXPECT_FALSE(resolveInside(root.path, "a/../../x"));
+  EXPECT_FALSE(resolveInside(root.path, ".."));
+  EXPECT_FALSE(resolveInside(root.path, (outside.path / "secret.nc").string()));  // absolute
+  EXPECT_FALSE(resolveInside(root.path, "/etc/passwd"));
+  EXPECT_FALSE(resolveInside(root.path, "a/link.nc"));          // symlink out
+  EXPECT_FALSE(resolveInside(root.path, "dirlink/secret.nc"));  // through a folder symlink
+  EXPECT_FALSE(resolveInside(root.path, std::string("a/prog.nc\0x", 11)));
+  EXPECT_FALSE(resolveInside(root.path, "a\\prog.nc"));
+  EXPECT_FALSE(resolveInside(root.path, "a/missing.nc"));
+}
+
+TEST(RunJob, TraceAndStepsLineForLine) {
+  json r = runJob({{"program", "O0001\nG90 G00 X10. Y5.\n#1=5\n#100=3\nG01 X#1 F100.\nM30\n"},
+                   {"name", "t.nc"}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  EXPECT_EQ(countLines(r["trace"].get<std::string>()), r["steps"].size());
+  ASSERT_EQ(r["steps"].size(), 2u);
+  // The second move runs after #1 = 5 and #100 = 3: its step says so, the first does not.
+  EXPECT_FALSE(r["steps"][0].contains("l"));
+  EXPECT_EQ(r["steps"][1]["l"]["#1"], 5.0);
+  EXPECT_EQ(r["steps"][1]["c"]["#100"], 3.0);
+  EXPECT_EQ(r["steps"][0]["m"]["1"], 0.0);   // G00
+  EXPECT_EQ(r["steps"][1]["m"]["1"], 1.0);   // G01
+  EXPECT_TRUE(r["steps"][0].contains("o"));  // offsets given once at the start
+  EXPECT_EQ(r["state"]["end"], "M30");
+  EXPECT_EQ(r["machine"]["kind"], "mill");
+}
+
+TEST(RunJob, AlarmHasItsLineAndColumn) {
+  json r = runJob({{"program", "O0001\nG00 X1.\n#1=0\n#2=1/#1\nM30\n"}, {"name", "a.nc"}});
+  ASSERT_TRUE(r["ok"].get<bool>());
+  EXPECT_EQ(r["state"]["alarm"]["code"], "PS0112");
+  EXPECT_EQ(r["state"]["alarm"]["line"], 4);
+  EXPECT_EQ(r["state"]["alarm"]["file"], "a.nc");
+  EXPECT_EQ(countLines(r["trace"].get<std::string>()), r["steps"].size());
+}
+
+TEST(RunJob, CapsBoundTheSetup) {
+  // The setup asks for more blocks than the server allows: the server's cap wins.
+  json r = runJob({{"program", "O0001\nWHILE[1EQ1]DO1\n#1=#1+1\nEND1\nM30\n"},
+                   {"setup", "[limits]\nmax_blocks = 100000000\n"},
+                   {"caps", {{"max_blocks", 500}}}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  EXPECT_EQ(r["state"]["end"], "limit");
+  EXPECT_EQ(r["state"]["blocks"], 500);
+  json big = runJob({{"program", std::string(2000, ' ')}, {"caps", {{"max_program_bytes", 1000}}}});
+  EXPECT_FALSE(big["ok"].get<bool>());
+  json bad = runJob({{"program", "O1\nM30\n"}, {"setup", "[machine\nkind = 3\n"}});
+  EXPECT_FALSE(bad["ok"].get<bool>());
+  EXPECT_NE(bad["error"].get<std::string>().find("setup error"), std::string::npos);
+  EXPECT_FALSE(runJob(json::array())["ok"].get<bool>());
+}
+
+class ServerTest : public ::testing::Test {
+ protected:
+  TempDir web, root, outside;
+  std::unique_ptr<WebServer> server;
+  std::thread thread;
+  int port = 0;
+
+  void SetUp() override {
+    write(web.path / "index.html", "<title>ncvm test page</title>");
+    write(outside.path / "secret.nc", "O9999 (SECRET)\n");
+    write(root.path / "parts" / "p1.nc", "O0001\nG00 X1.\nM98 P2000\nM30\n");
+    write(root.path / "parts" / "p1.toml", "[machine]\nkind = \"mill\"\n");
+    write(root.path / "parts" / "O2000.nc", "O2000\nG00 Y2.\nM99\n");
+    fs::create_symlink(outside.path / "secret.nc", root.path / "parts" / "link.nc");
+    fs::create_symlink(outside.path / "secret.nc", web.path / "leak.html");
+    ServerConfig c;
+    c.port = 0;
+    c.webDir = web.path.string();
+    c.catalog.add("root", root.path);
+    c.workerExe = NCVM_BINARY;
+    c.maxBodyBytes = 64 * 1024;
+    c.caps.maxProgramBytes = 16 * 1024;
+    c.caps.maxBlocks = 1'000'000'000;  // so that only the wall clock stops the runaway
+    c.worker.timeout = std::chrono::milliseconds(1500);
+    c.threads = 8;
+    server = std::make_unique<WebServer>(std::move(c));
+    port = server->bind();
+    thread = std::thread([this] { server->listen(); });
+  }
+  void TearDown() override {
+    server->stop();
+    thread.join();
+  }
+  httplib::Client client() {
+    httplib::Client c("127.0.0.1", port);
+    c.set_read_timeout(30, 0);
+    return c;
+  }
+  httplib::Result post(const std::string& body) {
+    return client().Post("/api/run", body, "application/json");
+  }
+  // What the server answers to raw bytes, or "" when it just closes.
+  std::string raw(const std::string& bytes) {
+    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(static_cast<uint16_t>(port));
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+      ::close(fd);
+      return "connect failed";
+    }
+    timeval tv{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    (void)::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
+    ::shutdown(fd, SHUT_WR);
+    std::string out;
+    char buf[4096];
+    ssize_t n;
+    while ((n = ::recv(fd, buf, sizeof buf, 0)) > 0) out.append(buf, static_cast<size_t>(n));
+    ::close(fd);
+    return out;
+  }
+};
+
+TEST_F(ServerTest, ServesThePageAndListsPrograms) {
+  auto r = client().Get("/");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_NE(r->body.find("ncvm test page"), std::string::npos);
+  auto files = client().Get("/api/files");
+  ASSERT_TRUE(files);
+  json j = json::parse(files->body);
+  ASSERT_EQ(j["roots"].size(), 1u);
+  std::vector<std::string> paths;
+  for (const auto& f : j["roots"][0]["files"]) paths.push_back(f["path"]);
+  // The symlink out of the root is not listed.
+  EXPECT_EQ(paths, (std::vector<std::string>{"parts/O2000.nc", "parts/p1.nc"}));
+  auto f = client().Get("/api/file?root=root&path=parts/p1.nc");
+  ASSERT_TRUE(f);
+  EXPECT_EQ(f->status, 200);
+  json pj = json::parse(f->body);
+  EXPECT_EQ(pj["setup_path"], "parts/p1.toml");
+  EXPECT_EQ(pj["dir"], "parts");
+}
+
+TEST_F(ServerTest, RefusesPathsOutsideItsFolders) {
+  for (const char* bad :
+       {"/api/file?root=root&path=../../etc/passwd", "/api/file?root=root&path=/etc/passwd",
+        "/api/file?root=root&path=parts/link.nc", "/api/file?root=nope&path=parts/p1.nc",
+        "/api/file?root=root&path=parts/%2e%2e/%2e%2e/x"}) {
+    auto r = client().Get(bad);
+    ASSERT_TRUE(r) << bad;
+    EXPECT_TRUE(r->status == 400 || r->status == 404) << bad << " -> " << r->status;
+    EXPECT_EQ(r->body.find("SECRET"), std::string::npos) << bad;
+  }
+  for (const char* bad : {"/leak.html", "/../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd",
+                          "/..%2f..%2fetc%2fpasswd"}) {
+    std::string answer = raw(std::string("GET ") + bad +
+                             " HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n");
+    EXPECT_EQ(answer.find("SECRET"), std::string::npos) << bad;
+    EXPECT_EQ(answer.find("root:"), std::string::npos) << bad;
+    EXPECT_EQ(answer.find("HTTP/1.1 200"), std::string::npos)
+        << bad << ": " << answer.substr(0, 40);
+  }
+  // A library folder for M98 must be inside a root too.
+  auto r = post(json{{"program", "O1\nM30\n"}, {"root", "root"}, {"dir", "../"}}.dump());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+}
+
+TEST_F(ServerTest, RunsWithTheProgramsFolderAsLibrary) {
+  auto f = client().Get("/api/file?root=root&path=parts/p1.nc");
+  json pj = json::parse(f->body);
+  auto r = post(json{
+      {"program", pj["text"]},
+      {"name", "p1.nc"},
+      {"setup", pj["setup"]},
+      {"root", "root"},
+      {"dir",
+       "parts"}}.dump());
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  json j = json::parse(r->body);
+  EXPECT_EQ(j["state"]["end"], "M30");
+  EXPECT_EQ(j["state"]["moves"], 2);  // O2000 was found in the folder
+}
+
+TEST_F(ServerTest, MalformedAndOversizedRequests) {
+  auto r = post("{not json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  r = post("[1,2,3]");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  r = post(json{{"programme", "O1"}}.dump());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  r = post(json{{"program", "O1\nM30\n"}, {"name", 42}, {"dir", false}}.dump());  // wrong types: ignored
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  r = post(json{{"program", 42}}.dump());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  r = post(json{{"program", "O1\nM30\n"}, {"setup", "[[[bad toml"}}.dump());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 400);
+  EXPECT_NE(r->body.find("setup error"), std::string::npos);
+  r = post(json{{"program", std::string(20 * 1024, 'G')}}.dump());  // program cap 16 KiB
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 413);
+  r = post(std::string(100 * 1024, ' '));  // body cap 64 KiB
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 413);
+  // Garbage on the socket gets an error or a closed connection, and the server lives on.
+  for (const char* junk :
+       {"GARBAGE\r\n\r\n", "GET\r\n\r\n", "\x01\x02\x03\xff\r\n\r\n",
+        "POST /api/run HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 99999999999\r\n\r\n"}) {
+    std::string answer = raw(junk);
+    EXPECT_EQ(answer.find("HTTP/1.1 200"), std::string::npos) << junk;
+  }
+  auto alive = client().Get("/api/info");
+  ASSERT_TRUE(alive);
+  EXPECT_EQ(alive->status, 200);
+}
+
+TEST_F(ServerTest, RefusesForeignHostAndOrigin) {
+  httplib::Client c = client();
+  auto r = c.Get("/api/info", {{"Host", "evil.example:80"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 403);
+  r = c.Post("/api/run", {{"Origin", "http://evil.example"}}, json{{"program", "O1\nM30\n"}}.dump(),
+             "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 403);
+}
+
+TEST_F(ServerTest, ConcurrentClientsAreIsolated) {
+  constexpr int kClients = 8, kEach = 3;
+  std::vector<std::thread> threads;
+  std::vector<int> good(kClients, 0);
+  for (int id = 0; id < kClients; ++id)
+    threads.emplace_back([&, id] {
+      for (int k = 0; k < kEach; ++k) {
+        // Each run writes its own id into #100 and #500: another run must never see it.
+        std::string prog = "O0001\nIF[#100NE#0]GOTO9\n#100=" + std::to_string(id) +
+                           "\n#500=#500+1\nG01 X#100 F1000.\nN9 M30\n";
+        auto r = post(json{{"program", prog}}.dump());
+        if (!r || r->status != 200) continue;
+        json j = json::parse(r->body);
+        if (j["state"]["vars"]["#100"] == static_cast<double>(id) &&
+            j["state"]["vars"]["#500"] == 1.0)
+          ++good[id];
+      }
+    });
+  for (auto& t : threads) t.join();
+  for (int id = 0; id < kClients; ++id) EXPECT_EQ(good[id], kEach) << "client " << id;
+}
+
+TEST_F(ServerTest, RunawayProgramTimesOut) {
+  auto start = std::chrono::steady_clock::now();
+  auto r = post(json{{"program", "O0001\nWHILE[1EQ1]DO1\n#1=#1+1\nEND1\nM30\n"}}.dump());
+  auto took = std::chrono::steady_clock::now() - start;
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 503);
+  EXPECT_NE(r->body.find("timeout"), std::string::npos);
+  EXPECT_LT(took, std::chrono::seconds(10));
+  // The server still runs the next program.
+  auto ok = post(json{{"program", "O1\nG00 X1.\nM30\n"}}.dump());
+  ASSERT_TRUE(ok);
+  EXPECT_EQ(ok->status, 200);
+}

@@ -1,0 +1,188 @@
+// ncvm serve's page: program editor, 3D toolpath, timeline and panels, wired together.
+import './style.css';
+import * as api from './api.js';
+import { Editor } from './editor.js';
+import { View3D } from './view3d.js';
+import { buildModel, toolAt } from './model.js';
+import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
+
+const $ = (id) => document.getElementById(id);
+const SUB = 10; // slider positions per event: scrubbing shows a move part-way
+
+const editor = new Editor($('editor'));
+const view = new View3D($('view'));
+const ui = { model: null, p: 0, source: { root: null, dir: '', name: 'program.nc' }, stale: false };
+
+function setStatus(text, cls = '') {
+  $('status').textContent = text;
+  $('status').className = `status ${cls}`;
+}
+
+// Tabs: each .tabs bar switches the panes named by its buttons.
+for (const bar of document.querySelectorAll('.tabs')) {
+  bar.addEventListener('click', (e) => {
+    const b = e.target.closest('button');
+    if (!b) return;
+    for (const x of bar.querySelectorAll('button')) {
+      x.classList.toggle('active', x === b);
+      $(x.dataset.tab).classList.toggle('active', x === b);
+    }
+    if (b.dataset.tab === 'editor') editor.render();
+  });
+}
+document.querySelectorAll('.views button').forEach((b) => b.addEventListener('click', () => view.setView(b.dataset.view)));
+
+async function loadFiles() {
+  const list = await api.files();
+  const sel = $('files');
+  for (const r of list.roots || []) {
+    const g = document.createElement('optgroup');
+    g.label = r.name;
+    for (const f of r.files) {
+      const o = document.createElement('option');
+      o.value = `${r.name}|${f.path}`;
+      o.textContent = f.path;
+      g.appendChild(o);
+    }
+    sel.appendChild(g);
+  }
+}
+
+async function openFile(root, path) {
+  const f = await api.file(root, path);
+  if (!f.ok) return setStatus(f.error, 'bad');
+  editor.text = f.text;
+  $('setup-text').value = f.setup || '';
+  ui.source = { root, dir: f.dir, name: path.split('/').pop() };
+  $('files').value = `${root}|${path}`;
+  setStatus(`${path}${f.setup_path ? ` (setup ${f.setup_path})` : ''}`);
+  clearRun();
+}
+
+function clearRun() {
+  ui.model = null;
+  $('scrub').max = 0;
+  $('stepinfo').textContent = '-';
+}
+
+$('files').addEventListener('change', (e) => {
+  const [root, path] = e.target.value.split('|');
+  if (root && path) openFile(root, path);
+  else {
+    editor.text = 'O0001\n';
+    ui.source = { root: null, dir: '', name: 'program.nc' };
+    clearRun();
+  }
+});
+
+editor.onChange = () => {
+  if (ui.model) {
+    ui.stale = true;
+    setStatus('edited: Run again to update', 'warn');
+  }
+};
+
+async function run() {
+  setStatus('running...', 'busy');
+  $('run').disabled = true;
+  const req = { program: editor.text, name: ui.source.name };
+  if ($('setup-text').value.trim()) req.setup = $('setup-text').value;
+  if (ui.source.root) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
+  const answer = await api.run(req).catch((e) => ({ ok: false, error: String(e) }));
+  $('run').disabled = false;
+  if (!answer.ok) {
+    setStatus(answer.error || 'the run failed', 'bad');
+    return;
+  }
+  ui.stale = false;
+  const model = buildModel(answer);
+  ui.model = model;
+  ui.shown = null;
+  const s = answer.state;
+  const marks = [];
+  const mine = (f) => !f || f === ui.source.name;
+  if (s.alarm && mine(s.alarm.file)) marks.push({ line: s.alarm.line, kind: 'alarm', text: `${s.alarm.code} ${s.alarm.text}` });
+  for (const c of answer.check.alarms) if (mine(c.file)) marks.push({ line: c.line, kind: 'alarm', text: `${c.code} ${c.text}` });
+  for (const w of [...answer.check.warnings, ...s.warnings]) if (mine(w.file)) marks.push({ line: w.line, kind: 'warning', text: `${w.code} ${w.text}` });
+  editor.setMarks(marks);
+  view.setModel(model);
+  $('scrub').max = model.events.length * SUB;
+  renderMessages($('p-messages'), model, pick);
+  renderTime($('p-time'), model);
+  setStatus(
+    s.alarm ? `${s.end}: ${s.alarm.code} ${s.alarm.text} (${s.alarm.file}:${s.alarm.line})` : `ended ${s.end}: ${s.blocks} blocks, ${s.moves} moves, cycle time ${s.cycle_time.toFixed(2)} s`,
+    s.alarm ? 'bad' : 'good',
+  );
+  goTo(model.events.length * SUB);
+}
+
+// Jump to a message: to its event when it has one, else just to its line.
+function pick(item) {
+  if (item.event !== undefined) goTo((item.event + 1) * SUB);
+  else if (item.line && (!item.file || item.file === ui.source.name)) editor.setCurrent(item.line);
+}
+
+function goTo(pos) {
+  const m = ui.model;
+  if (!m) return;
+  ui.p = Math.max(0, Math.min(pos, m.events.length * SUB));
+  $('scrub').value = ui.p;
+  const p = ui.p / SUB;
+  const tool = toolAt(m, p);
+  const done = Math.floor(p);
+  view.setProgress(done, tool.work);
+  const idx = p > done ? done : done - 1; // the event in progress, else the last one done
+  const ev = m.events[idx];
+  const state = idx >= 0 ? m.states[idx] : null;
+  renderPosition($('p-position'), m, tool);
+  renderVariables($('p-vars'), state, ui.shown);
+  ui.shown = state;
+  renderOffsets($('p-offsets'), state || m.states[0]);
+  renderModal($('p-modal'), state);
+  if (ev) {
+    const here = ev.file === ui.source.name;
+    editor.setCurrent(here ? ev.line : 0);
+    $('stepinfo').textContent = `event ${idx + 1}/${m.events.length} · block ${state.block} · ${ev.file}:${ev.line}${ev.n !== null ? ` N${ev.n}` : ''} · ${ev.type}${ev.mode ? ' ' + ev.mode : ''} · t ${state.time.toFixed(2)} s`;
+  } else {
+    editor.setCurrent(0);
+    $('stepinfo').textContent = `start · ${m.events.length} events`;
+  }
+}
+
+// Single block: to the end of the next (previous) block that made the machine do something.
+function step(dir) {
+  const m = ui.model;
+  if (!m) return;
+  const done = Math.floor(ui.p / SUB);
+  if (dir > 0) {
+    const b = m.blocks.find((x) => x.last + 1 > done);
+    if (b) goTo((b.last + 1) * SUB);
+  } else {
+    const prev = [...m.blocks].reverse().find((x) => x.last + 1 < done || (x.last + 1 === done && ui.p % SUB !== 0));
+    goTo(prev ? (prev.last + 1) * SUB : 0);
+  }
+}
+
+$('scrub').addEventListener('input', (e) => goTo(Number(e.target.value)));
+$('fwd').addEventListener('click', () => step(1));
+$('back').addEventListener('click', () => step(-1));
+$('run').addEventListener('click', run);
+document.addEventListener('keydown', (e) => {
+  if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) run();
+  if (['TEXTAREA', 'INPUT', 'SELECT'].includes(e.target.tagName)) return;
+  if (e.key === 'ArrowRight') step(1);
+  if (e.key === 'ArrowLeft') step(-1);
+});
+
+(async () => {
+  const inf = await api.info();
+  if (inf.setup) $('setup-text').placeholder = `# empty: the server's --setup ${inf.setup_name}`;
+  await loadFiles();
+  renderVariables($('p-vars'), null);
+  if (inf.start) await openFile(inf.start.root, inf.start.path);
+  else {
+    editor.text = 'O0001 (NEW PROGRAM)\nG21 G90 G17 G40 G80\nG00 X0 Y0 Z5.\nG01 Z-1. F100.\nX50.\nY30.\nM30\n';
+    setStatus('pick an example or write a program, then Run');
+  }
+  document.body.dataset.ready = 'true';
+})();

@@ -1,0 +1,166 @@
+// The 3D view (three.js): the toolpath coloured by kind of move, the part done so far
+// brighter than what is to come, the tool at the current step, orbit/pan/zoom and standard
+// views. A lathe is drawn as a half-section in the XZ plane: Z to the right, the radius (X/2)
+// up, the spindle axis as a line.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { drawStock } from './stock.js';
+
+const COLORS = { rapid: 0xff5533, feed: 0x33ccff, comp: 0xdd55ff, thread: 0xffdd33 };
+const BG = 0x15181d;
+
+export class View3D {
+  constructor(host) {
+    this.host = host;
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
+    this.renderer.setClearColor(BG);
+    host.appendChild(this.renderer.domElement);
+    this.scene = new THREE.Scene();
+    this.camera = new THREE.PerspectiveCamera(40, 1, 0.1, 1e6);
+    this.camera.up.set(0, 0, 1);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.addEventListener('change', () => this.draw());
+    this.scene.add(new THREE.AmbientLight(0xffffff, 0.7));
+    const sun = new THREE.DirectionalLight(0xffffff, 0.8);
+    sun.position.set(1, -2, 3);
+    this.scene.add(sun);
+    this.group = new THREE.Group();
+    this.scene.add(this.group);
+    this.tool = this.makeTool(5);
+    this.scene.add(this.tool);
+    this.lathe = false;
+    this.bounds = new THREE.Box3(new THREE.Vector3(-50, -50, -50), new THREE.Vector3(50, 50, 50));
+    new ResizeObserver(() => this.resize()).observe(host);
+    this.resize();
+  }
+
+  // Work coordinates -> scene: a lathe's (X diameter, Z) become (Z, 0, X/2).
+  toScene(p) {
+    return this.lathe ? new THREE.Vector3(p[2], 0, p[0] / 2) : new THREE.Vector3(p[0], p[1], p[2]);
+  }
+
+  makeTool(size) {
+    const g = new THREE.Group();
+    const mat = new THREE.MeshPhongMaterial({ color: 0xd0d4da, transparent: true, opacity: 0.85 });
+    const tip = new THREE.Mesh(new THREE.CylinderGeometry(size / 2, size / 2, size * 3, 24), mat);
+    tip.rotation.x = Math.PI / 2;
+    tip.position.z = size * 1.5;
+    const holder = new THREE.Mesh(
+      new THREE.CylinderGeometry(size * 1.4, size * 1.4, size * 2, 24),
+      new THREE.MeshPhongMaterial({ color: 0x667080, transparent: true, opacity: 0.6 }),
+    );
+    holder.rotation.x = Math.PI / 2;
+    holder.position.z = size * 4;
+    g.add(tip, holder);
+    return g;
+  }
+
+  setModel(model) {
+    this.model = model;
+    this.lathe = model.lathe;
+    this.group.clear();
+    const box = new THREE.Box3();
+    box.expandByPoint(this.toScene(model.start));
+    this.segments = [];
+    for (const m of model.moves) {
+      const e = m.event;
+      const kind = e.mode === 'rapid' ? 'rapid' : e.thread ? 'thread' : e.compensated || e.prog_end ? 'comp' : 'feed';
+      const pts = m.pts.map((p) => this.toScene(p));
+      pts.forEach((p) => box.expandByPoint(p));
+      this.segments.push({ pts, kind, index: m.index });
+    }
+    if (box.isEmpty()) box.set(new THREE.Vector3(-50, -50, -50), new THREE.Vector3(50, 50, 50));
+    const size = box.getSize(new THREE.Vector3()).length() || 100;
+    box.expandByScalar(size * 0.05);
+    this.bounds = box;
+    // Two layers per kind: done (bright) and to come (dim); rebuilt when the step changes.
+    this.paths = {};
+    for (const kind of Object.keys(COLORS))
+      for (const done of [true, false]) {
+        const geo = new THREE.BufferGeometry();
+        const mat = new THREE.LineBasicMaterial({ color: COLORS[kind], transparent: !done, opacity: done ? 1 : 0.28 });
+        const line = new THREE.LineSegments(geo, mat);
+        this.paths[`${kind}:${done}`] = line;
+        this.group.add(line);
+      }
+    const grid = new THREE.GridHelper(Math.ceil(size / 10) * 20, 20, 0x3a4048, 0x262b31);
+    if (!this.lathe) grid.rotation.x = Math.PI / 2;
+    else grid.rotation.x = 0;
+    grid.position.copy(this.lathe ? new THREE.Vector3(box.getCenter(new THREE.Vector3()).x, 0, 0) : new THREE.Vector3(0, 0, box.min.z));
+    this.group.add(grid);
+    this.group.add(new THREE.AxesHelper(size * 0.15));
+    if (this.lathe) {
+      // The spindle axis (X = 0).
+      const axis = new THREE.BufferGeometry().setFromPoints([
+        new THREE.Vector3(box.min.x - size * 0.1, 0, 0),
+        new THREE.Vector3(box.max.x + size * 0.1, 0, 0),
+      ]);
+      this.group.add(new THREE.Line(axis, new THREE.LineDashedMaterial({ color: 0x99a0aa, dashSize: 3, gapSize: 2 })).computeLineDistances());
+    }
+    // Hook for the stock simulation (issue 8): drawn when the run answer has one.
+    if (model.answer.stock) {
+      const stock = drawStock(model.answer.stock, this.lathe);
+      if (stock) this.group.add(stock);
+    }
+    this.scene.remove(this.tool);
+    // Sized to the part (mm or inch); on a lathe it stands along X, as a turret tool would.
+    this.tool = this.makeTool(Math.min(10, size / 40));
+    this.scene.add(this.tool);
+    this.lastDone = -2;
+    this.setView(this.lathe ? 'front' : 'iso');
+  }
+
+  // progressIndex: events before it are done.
+  setProgress(doneEvents, toolWork) {
+    if (!this.model) return;
+    if (doneEvents !== this.lastDone) {
+      this.lastDone = doneEvents;
+      const buf = {};
+      for (const k of Object.keys(this.paths)) buf[k] = [];
+      for (const s of this.segments) {
+        const b = buf[`${s.kind}:${s.index < doneEvents}`];
+        for (let j = 1; j < s.pts.length; j++) b.push(s.pts[j - 1].x, s.pts[j - 1].y, s.pts[j - 1].z, s.pts[j].x, s.pts[j].y, s.pts[j].z);
+      }
+      for (const [k, arr] of Object.entries(buf)) {
+        const geo = this.paths[k].geometry;
+        geo.setAttribute('position', new THREE.Float32BufferAttribute(arr, 3));
+        geo.computeBoundingSphere();
+      }
+    }
+    if (toolWork) this.tool.position.copy(this.toScene(toolWork));
+    this.draw();
+  }
+
+  setView(name) {
+    const b = this.bounds, c = b.getCenter(new THREE.Vector3());
+    const d = b.getSize(new THREE.Vector3()).length() * 1.5 + 1;
+    const dirs = {
+      iso: new THREE.Vector3(1, -1.2, 0.9),
+      top: new THREE.Vector3(0, -0.0001, 1),
+      front: new THREE.Vector3(0, -1, 0.0001),
+      side: new THREE.Vector3(1, 0, 0.0001),
+      fit: this.camera.position.clone().sub(this.controls.target),
+    };
+    const dir = (dirs[name] || dirs.iso).clone().normalize();
+    this.camera.position.copy(c).addScaledVector(dir, d);
+    this.controls.target.copy(c);
+    this.camera.near = d / 1000;
+    this.camera.far = d * 100;
+    this.camera.updateProjectionMatrix();
+    this.controls.update();
+    this.draw();
+  }
+
+  resize() {
+    const w = this.host.clientWidth || 300, h = this.host.clientHeight || 200;
+    this.renderer.setSize(w, h);
+    this.camera.aspect = w / h;
+    this.camera.updateProjectionMatrix();
+    this.draw();
+  }
+
+  draw() {
+    this.renderer.render(this.scene, this.camera);
+  }
+}
