@@ -3,10 +3,13 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #include "app/machine_state.hpp"
 #include "app/session.hpp"
@@ -62,11 +65,16 @@ std::string hms(double seconds) {
   return fmt::format("{}:{:02d}:{:05.2f}", total / 3600, total / 60 % 60, seconds - static_cast<double>(total / 60 * 60));
 }
 
-int runCommand(const CommonOptions& o, const std::string& tracePath, const std::string& statePath,
-               const std::string& outputPath, const std::string& machineStatePath, bool quiet) {
+// One run; what it would print goes to `out` (stdout) and `err` (stderr), so batch runs on
+// several threads can print each program's report whole, in command-line order.
+int runOne(const CommonOptions& o, const std::string& tracePath, const std::string& statePath,
+           const std::string& outputPath, const std::string& machineStatePath, bool quiet, std::string& out,
+           std::string& err) {
+  auto outAt = std::back_inserter(out);
+  auto errAt = std::back_inserter(err);
   Session session(makeSetup(o));
   loadPrograms(session, o);
-  for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
+  for (const auto& w : session.store().warnings()) fmt::format_to(errAt, "ncvm: warning: {}\n", w);
 
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<TraceWriter> trace;
@@ -95,32 +103,103 @@ int runCommand(const CommonOptions& o, const std::string& tracePath, const std::
     traceFile->commit();
   }
   if (!statePath.empty()) writeFileAtomic(statePath, r.state.dump(2) + "\n");
-  std::string out = !outputPath.empty() ? outputPath : session.setup().dprntPath;
+  std::string dprnt = !outputPath.empty() ? outputPath : session.setup().dprntPath;
   if (!r.printed.empty()) {
-    if (out.empty())
-      fmt::print(stderr, "ncvm: warning: DPRNT output discarded (give --output FILE or output.dprnt)\n");
+    if (dprnt.empty())
+      err += "ncvm: warning: DPRNT output discarded (give --output FILE or output.dprnt)\n";
     else
-      writeFileAtomic(out, r.printed);
+      writeFileAtomic(dprnt, r.printed);
   }
 
   const Program* main = session.main();
   if (!quiet) {
-    fmt::print("ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
-               endReasonName(r.end));
-    fmt::print("  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {} (length/feed)\n",
-               r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength, r.stats.rapidLength,
-               r.stats.feedLength, hms(r.stats.time));
+    fmt::format_to(outAt, "ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
+                   endReasonName(r.end));
+    fmt::format_to(outAt, "  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {} (length/feed)\n",
+                   r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength, r.stats.rapidLength,
+                   r.stats.feedLength, hms(r.stats.time));
     for (const auto& w : r.warnings)
-      fmt::print("{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
-    if (!tracePath.empty()) fmt::print("  trace: {}\n", tracePath);
-    if (!statePath.empty()) fmt::print("  state: {}\n", statePath);
-    if (!r.printed.empty() && !out.empty()) fmt::print("  output: {}\n", out);
+      fmt::format_to(outAt, "{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
+    if (!tracePath.empty()) fmt::format_to(outAt, "  trace: {}\n", tracePath);
+    if (!statePath.empty()) fmt::format_to(outAt, "  state: {}\n", statePath);
+    if (!r.printed.empty() && !dprnt.empty()) fmt::format_to(outAt, "  output: {}\n", dprnt);
   }
   if (r.alarm) {
-    fmt::print("{}\n", alarmLine(*r.alarm, session.files()));
+    fmt::format_to(outAt, "{}\n", alarmLine(*r.alarm, session.files()));
     return kExitAlarm;
   }
   return kExitOk;
+}
+
+int runCommand(const CommonOptions& o, const std::string& tracePath, const std::string& statePath,
+               const std::string& outputPath, const std::string& machineStatePath, bool quiet) {
+  std::string out, err;
+  int rc = 0;
+  try {
+    rc = runOne(o, tracePath, statePath, outputPath, machineStatePath, quiet, out, err);
+  } catch (...) {
+    std::fputs(err.c_str(), stderr);
+    throw;
+  }
+  std::fputs(err.c_str(), stderr);
+  std::fputs(out.c_str(), stdout);
+  return rc;
+}
+
+// `ncvm run --batch A.nc B.nc ...`: every file is a program of its own, run on its own
+// thread (--jobs, default all cores). --trace, --state and --output name folders; each
+// program writes STEM.jsonl, STEM.json and STEM.txt there. Reports are printed in
+// command-line order; the exit status is the worst of the runs (2 > 3 > 0).
+int batchCommand(const CommonOptions& o, const std::string& traceDir, const std::string& stateDir,
+                 const std::string& outputDir, const std::string& machineStatePath, bool quiet,
+                 unsigned jobs) {
+  if (!machineStatePath.empty())
+    throw std::runtime_error("--machine-state cannot be shared by the programs of a batch");
+  const size_t n = o.programs.size();
+  std::vector<std::string> stems(n);
+  for (size_t k = 0; k < n; ++k) {
+    stems[k] = std::filesystem::path(o.programs[k]).stem().string();
+    for (size_t j = 0; j < k; ++j)
+      if (stems[j] == stems[k])
+        throw std::runtime_error(fmt::format("{} and {}: batch outputs would share the name {}",
+                                             o.programs[j], o.programs[k], stems[k]));
+  }
+  for (const std::string* dir : {&traceDir, &stateDir, &outputDir})
+    if (!dir->empty()) std::filesystem::create_directories(*dir);
+  auto in = [](const std::string& dir, const std::string& stem, const char* ext) {
+    return dir.empty() ? std::string() : (std::filesystem::path(dir) / (stem + ext)).string();
+  };
+  std::vector<std::string> outs(n), errs(n);
+  std::vector<int> codes(n, kExitOk);
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t k = next++; k < n; k = next++) {
+      CommonOptions one = o;
+      one.programs = {o.programs[k]};
+      try {
+        codes[k] = runOne(one, in(traceDir, stems[k], ".jsonl"), in(stateDir, stems[k], ".json"),
+                          in(outputDir, stems[k], ".txt"), {}, quiet, outs[k], errs[k]);
+      } catch (const SetupError& e) {
+        errs[k] += fmt::format("ncvm: setup error: {}{}\n", e.what(),
+                               e.line ? fmt::format(" (line {})", e.line) : "");
+        codes[k] = kExitUsage;
+      } catch (const std::exception& e) {
+        errs[k] += fmt::format("ncvm: {}: {}\n", o.programs[k], e.what());
+        codes[k] = kExitUsage;
+      }
+    }
+  };
+  if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < std::min<size_t>(jobs, n); ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  int rc = kExitOk;
+  for (size_t k = 0; k < n; ++k) {
+    std::fputs(errs[k].c_str(), stderr);
+    std::fputs(outs[k].c_str(), stdout);
+    if (codes[k] == kExitUsage || (codes[k] == kExitAlarm && rc == kExitOk)) rc = codes[k];
+  }
+  return rc;
 }
 
 int checkCommand(const CommonOptions& o, bool json) {
@@ -168,7 +247,8 @@ int main(int argc, char** argv) {
 
   CommonOptions runOpts;
   std::string tracePath, statePath, outputPath, machineStatePath;
-  bool quiet = false;
+  bool quiet = false, batch = false;
+  unsigned jobs = 0;
   auto* run = app.add_subcommand("run", "run a program and report what the machine does");
   addCommon(run, runOpts);
   run->add_option("--trace", tracePath, "write the event trace (JSON Lines)");
@@ -177,6 +257,10 @@ int main(int argc, char** argv) {
   run->add_option("--machine-state", machineStatePath,
                   "persistent memory (#500-#999, offsets, part counters): loaded if it exists, saved after the run");
   run->add_flag("-q,--quiet", quiet, "print only alarms");
+  run->add_flag("--batch", batch,
+                "run every PROGRAM file as a program of its own, in parallel; --trace, --state and --output "
+                "then name folders (STEM.jsonl, STEM.json, STEM.txt)");
+  run->add_option("-j,--jobs", jobs, "threads for --batch (default: all cores)");
 
   CommonOptions checkOpts;
   bool json = false;
@@ -198,6 +282,8 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   try {
+    if (run->parsed() && batch)
+      return batchCommand(runOpts, tracePath, statePath, outputPath, machineStatePath, quiet, jobs);
     if (run->parsed()) return runCommand(runOpts, tracePath, statePath, outputPath, machineStatePath, quiet);
     if (check->parsed()) return checkCommand(checkOpts, json);
     if (app.got_subcommand("alarms")) printAlarmTable();

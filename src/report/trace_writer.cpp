@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cstring>
+
 #include "core/alarm.hpp"
+#include "report/json_number.hpp"
 
 namespace ncvm {
 
@@ -69,9 +72,13 @@ void TraceWriter::begin(const char* type, const EventOrigin& at) {
   buf_ += type;
   buf_ += "\",\"file\":";
   buf_ += fileName(at.file);
-  fmt::format_to(std::back_inserter(buf_), ",\"line\":{},\"n\":", at.line);
-  if (at.n >= 0) fmt::format_to(std::back_inserter(buf_), "{}", at.n);
-  else buf_ += "null";
+  buf_ += ",\"line\":";
+  number(static_cast<int64_t>(at.line));
+  buf_ += ",\"n\":";
+  if (at.n >= 0)
+    number(static_cast<int64_t>(at.n));
+  else
+    buf_ += "null";
   buf_ += ",\"prog\":";
   if (at.programName) escapeInto(buf_, *at.programName);
   else buf_ += "null";
@@ -83,10 +90,35 @@ void TraceWriter::end() {
   if (written_ + buf_.size() > maxBytes_) throw AlarmError(AlarmId::TraceLimit, "limits.max_trace_bytes");
 }
 
+void TraceWriter::number(double v) {
+  char tmp[kNumberChars];
+  buf_.append(tmp, static_cast<size_t>(formatDouble(tmp, v) - tmp));
+}
+
+void TraceWriter::number(int64_t v) {
+  char tmp[kNumberChars];
+  buf_.append(tmp, static_cast<size_t>(formatInt(tmp, v) - tmp));
+}
+
 void TraceWriter::axes(const char* key, const AxisArray& a) {
-  fmt::format_to(std::back_inserter(buf_), ",\"{}\":[{},{},{}", key, a[0], a[1], a[2]);
-  for (int k = 3; k < axes_; ++k) fmt::format_to(std::back_inserter(buf_), ",{}", a[static_cast<size_t>(k)]);
-  buf_ += ']';
+  // One buffer for the whole array: this runs four times per move.
+  char tmp[16 + kMaxAxes * (kNumberChars + 1)];
+  char* p = tmp;
+  *p++ = ',';
+  *p++ = '"';
+  size_t len = std::strlen(key);
+  std::memcpy(p, key, len);
+  p += len;
+  *p++ = '"';
+  *p++ = ':';
+  *p++ = '[';
+  int n = axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_);
+  for (int k = 0; k < n; ++k) {
+    if (k) *p++ = ',';
+    p = formatDouble(p, a[static_cast<size_t>(k)]);
+  }
+  *p++ = ']';
+  buf_.append(tmp, static_cast<size_t>(p - tmp));
 }
 
 void TraceWriter::string(std::string_view s) { escapeInto(buf_, s); }
@@ -100,7 +132,12 @@ void TraceWriter::onMove(const MoveEvent& e) {
   axes("end", e.end);
   axes("mstart", e.mstart);
   axes("mend", e.mend);
-  fmt::format_to(std::back_inserter(buf_), ",\"feed\":{},\"length\":{},\"time\":{}", e.feed, e.length, e.time);
+  buf_ += ",\"feed\":";
+  number(e.feed);
+  buf_ += ",\"length\":";
+  number(e.length);
+  buf_ += ",\"time\":";
+  number(e.time);
   if (e.arc)
     fmt::format_to(std::back_inserter(buf_), ",\"center\":[{},{},{}],\"plane\":{}", e.center[0], e.center[1],
                    e.center[2], e.plane);
