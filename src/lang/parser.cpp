@@ -200,6 +200,12 @@ ParsedFile Compiler::run() {
 }
 
 void Compiler::parseLine(size_t b, size_t e) {
+  // Most lines hold none of '(', ';' and '%': three memchr calls find that out quickly.
+  const void* line = s_.data() + b;
+  if (!std::memchr(line, '(', e - b) && !std::memchr(line, ';', e - b) && !std::memchr(line, '%', e - b)) {
+    parseBlock(b, e);
+    return;
+  }
   // Split at ';' (the EOB of printed listings) and '%' outside comments.
   size_t start = b;
   bool inComment = false;
@@ -416,15 +422,17 @@ double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
   // 2^53 and at most 22 of them follow the point, mantissa / 10^frac is one correctly rounded
   // division of two exact doubles, the same double from_chars returns (Clinger's fast path).
   // Longer numbers fall back to from_chars.
-  size_t start = i_;
+  // Locals, not peek(): the loop runs for every character of every number.
+  const char* text = s_.data();
+  size_t start = i_, i = i_, end = end_;
   hasPoint = false;
   intDigits = 0;
   bool leading = true, neg = false, anyDigit = false;
   uint64_t mantissa = 0;
   int significant = 0, frac = 0;
-  if (peek() == '+' || peek() == '-') neg = peek() == '-', ++i_;
-  while (true) {
-    char c = peek();
+  if (i < end && (text[i] == '+' || text[i] == '-')) neg = text[i] == '-', ++i;
+  for (; i < end; ++i) {
+    char c = text[i];
     if (isDigit(c)) {
       anyDigit = true;
       if (!hasPoint) {
@@ -434,29 +442,31 @@ double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
       }
       if (mantissa != 0 || c != '0') ++significant;
       if (significant <= 19) mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
-      ++i_;
     } else if (c == '.') {
-      if (hasPoint) fail(AlarmId::IllegalDecimalPoint, "two decimal points");
+      if (hasPoint) {
+        i_ = i;
+        fail(AlarmId::IllegalDecimalPoint, "two decimal points");
+      }
       hasPoint = true;
-      ++i_;
     } else {
       break;
     }
   }
+  i_ = i;
   if (!anyDigit) return 0.0;  // "X." reads as zero
   if (significant <= 19 && mantissa <= (uint64_t{1} << 53) && frac <= 22) {
     double v = static_cast<double>(mantissa) / kPow10[frac];
     return neg ? -v : v;
   }
-  std::string_view text = s_.substr(start, i_ - start);
-  if (text[0] == '+') text.remove_prefix(1);
+  std::string_view num = s_.substr(start, i_ - start);
+  if (num[0] == '+') num.remove_prefix(1);
   double v = 0;
   std::string buf;
-  if (text.back() == '.') {
-    buf = std::string(text) + "0";
-    text = buf;
+  if (num.back() == '.') {
+    buf = std::string(num) + "0";
+    num = buf;
   }
-  auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+  auto res = std::from_chars(num.data(), num.data() + num.size(), v);
   if (res.ec != std::errc()) fail(AlarmId::FloatOverflow, "number out of range");
   return v;
 }

@@ -53,7 +53,8 @@ char* formatDouble(char* out, double v) {
   // and a bare point dropped ("12.5", "-3", "0.001"). Zero is "0" ("-0" takes the slow path).
   if (std::fabs(v) < 1e9) {
     double scaled = v * 1e6;
-    auto n = static_cast<int64_t>(std::llround(scaled));
+    // Any rounding to a nearby integer will do: the test below checks that n / 10^6 is v.
+    auto n = static_cast<int64_t>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
     uint64_t mag = n < 0 ? ~static_cast<uint64_t>(n) + 1 : static_cast<uint64_t>(n);
     if (static_cast<double>(n) / 1e6 == v && (mag >= 100 || (n == 0 && !std::signbit(v)))) {
       if (n < 0) *out++ = '-';

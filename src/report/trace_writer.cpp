@@ -100,57 +100,78 @@ void TraceWriter::number(int64_t v) {
   buf_.append(tmp, static_cast<size_t>(formatInt(tmp, v) - tmp));
 }
 
-void TraceWriter::axes(const char* key, const AxisArray& a) {
-  // One buffer for the whole array: this runs four times per move.
-  char tmp[16 + kMaxAxes * (kNumberChars + 1)];
-  char* p = tmp;
+namespace {
+// Writers into a caller's buffer: a move is formatted on the stack and appended once.
+template <size_t N>
+char* put(char* p, const char (&literal)[N]) {
+  std::memcpy(p, literal, N - 1);
+  return p + N - 1;
+}
+
+char* putAxes(char* p, std::string_view key, const double* a, int n) {
   *p++ = ',';
   *p++ = '"';
-  size_t len = std::strlen(key);
-  std::memcpy(p, key, len);
-  p += len;
-  *p++ = '"';
-  *p++ = ':';
-  *p++ = '[';
-  int n = axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_);
+  std::memcpy(p, key.data(), key.size());
+  p += key.size();
+  p = put(p, "\":[");
   for (int k = 0; k < n; ++k) {
     if (k) *p++ = ',';
-    p = formatDouble(p, a[static_cast<size_t>(k)]);
+    p = formatDouble(p, a[k]);
   }
   *p++ = ']';
-  buf_.append(tmp, static_cast<size_t>(p - tmp));
+  return p;
+}
+}  // namespace
+
+int TraceWriter::reportedAxes() const { return axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_); }
+
+void TraceWriter::axes(const char* key, const AxisArray& a) {
+  char tmp[16 + kMaxAxes * (kNumberChars + 1)];
+  buf_.append(tmp, static_cast<size_t>(putAxes(tmp, key, a.data(), reportedAxes()) - tmp));
 }
 
 void TraceWriter::string(std::string_view s) { escapeInto(buf_, s); }
 
 void TraceWriter::onMove(const MoveEvent& e) {
   begin("move", e.at);
-  buf_ += ",\"mode\":\"";
-  buf_ += moveModeName(e.mode);
-  buf_ += '"';
-  axes("start", e.start);
-  axes("end", e.end);
-  axes("mstart", e.mstart);
-  axes("mend", e.mend);
-  buf_ += ",\"feed\":";
-  number(e.feed);
-  buf_ += ",\"length\":";
-  number(e.length);
-  buf_ += ",\"time\":";
-  number(e.time);
-  if (e.arc)
-    fmt::format_to(std::back_inserter(buf_), ",\"center\":[{},{},{}],\"plane\":{}", e.center[0], e.center[1],
-                   e.center[2], e.plane);
-  if (e.compensated) axes("prog_end", e.programmedEnd);
-  if (e.thread) buf_ += ",\"thread\":true";
-  if (e.pathPoints > 0) {
-    buf_ += ",\"path\":[";
-    for (int k = 0; k < e.pathPoints; ++k) {
-      const AxisArray& p = e.path[static_cast<size_t>(k)];
-      fmt::format_to(std::back_inserter(buf_), "{}[{},{},{}]", k ? "," : "", p[0], p[1], p[2]);
-    }
-    buf_ += ']';
+  // Everything after the origin has a bounded size: six axis arrays, the centre, the path
+  // points and a few numbers, each at most kNumberChars long.
+  char tmp[4096];
+  char* p = put(tmp, ",\"mode\":\"");
+  std::string_view mode = moveModeName(e.mode);
+  std::memcpy(p, mode.data(), mode.size());
+  p += mode.size();
+  *p++ = '"';
+  const int n = reportedAxes();
+  p = putAxes(p, "start", e.start.data(), n);
+  p = putAxes(p, "end", e.end.data(), n);
+  p = putAxes(p, "mstart", e.mstart.data(), n);
+  p = putAxes(p, "mend", e.mend.data(), n);
+  p = formatDouble(put(p, ",\"feed\":"), e.feed);
+  p = formatDouble(put(p, ",\"length\":"), e.length);
+  p = formatDouble(put(p, ",\"time\":"), e.time);
+  if (e.arc) {
+    p = putAxes(p, "center", e.center.data(), 3);
+    p = formatInt(put(p, ",\"plane\":"), e.plane);
   }
+  if (e.compensated) p = putAxes(p, "prog_end", e.programmedEnd.data(), n);
+  if (e.thread) p = put(p, ",\"thread\":true");
+  if (e.pathPoints > 0) {
+    p = put(p, ",\"path\":[");
+    for (int k = 0; k < e.pathPoints && k < kMaxAxes; ++k) {
+      if (k) *p++ = ',';
+      const AxisArray& q = e.path[static_cast<size_t>(k)];
+      *p++ = '[';
+      p = formatDouble(p, q[0]);
+      *p++ = ',';
+      p = formatDouble(p, q[1]);
+      *p++ = ',';
+      p = formatDouble(p, q[2]);
+      *p++ = ']';
+    }
+    *p++ = ']';
+  }
+  buf_.append(tmp, static_cast<size_t>(p - tmp));
   end();
 }
 
