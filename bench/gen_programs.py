@@ -19,6 +19,11 @@ Workloads (file names carry the size: 1000000 -> "1m", 200000 -> "200k"):
                                  M98 block per call, a G00 repositioning every 100 calls),
                                  M30; then O0100: a small G91 square pocket step, M99.
 
+--dialect rs274 writes the same workloads for LinuxCNC's rs274 (bench/peers) as .ngc files:
+no % or O-number lines (a bare O number is an O-word there), bracketed expressions, the
+loop as `o100 while` / `o100 endwhile`, the subprogram as `o100 sub` ... `o100 endsub`
+(defined before the main program, as rs274 requires) called by `o100 call`.
+
 The output is deterministic (fixed --seed). Every program keeps within ncvm's default
 limits (simulated machine time < 100 h, blocks < 10^8, file < 512 MB) up to 10^7 lines.
 """
@@ -72,14 +77,28 @@ class Writer:
 
 
 # ---------------------------------------------------------------------------------------------
-def gen_linear(path: str, lines: int) -> None:
+def header(w: Writer, rs274: bool, title: str) -> None:
+    """Program start: `%` and an O-number line for Fanuc, a comment for rs274."""
+    if rs274:
+        w.line(f"({title})")
+    else:
+        w.line("%")
+        w.line(f"O0001 ({title})")
+
+
+def footer(w: Writer, rs274: bool) -> None:
+    w.line("M30")
+    if not rs274:
+        w.line("%")
+
+
+def gen_linear(path: str, lines: int, rs274: bool = False) -> None:
     """Raster finishing pass over z = f(x, y): X zigzags across 0..120 mm in 0.25..0.45 mm
     steps, Y steps over 0.5 mm at each end and wanders 0.15 mm along a pass, Z follows the
     surface. Every line moves X, Y and
     Z (a 3-axis finishing toolpath as posted by CAM)."""
     w = Writer(path)
-    w.line("%")
-    w.line(f"O0001 (LINEAR {lines} MOVES)")
+    header(w, rs274, f"LINEAR {lines} MOVES")
     w.line("G90 G21 G17 G40 G49 G80 G54")
     w.line("G00 X0. Y0. Z5.")
     w.line("G01 Z0. F3000.")
@@ -104,19 +123,17 @@ def gen_linear(path: str, lines: int) -> None:
         else:
             w.line(body)
     w.line("G00 Z5.")
-    w.line("M30")
-    w.line("%")
+    footer(w, rs274)
     w.close()
 
 
 # ---------------------------------------------------------------------------------------------
-def gen_mixed(path: str, moves: int, seed: int) -> None:
+def gen_mixed(path: str, moves: int, seed: int, rs274: bool = False) -> None:
     """About 10% G00, 40% G01, 25% G02, 25% G03 in the box -100..100 mm. Arc ends are
     rounded to 0.001 mm; the generator checks |r_end - r_start| <= 0.001 mm."""
     rng = random.Random(seed)
     w = Writer(path)
-    w.line("%")
-    w.line(f"O0001 (MIXED {moves} MOVES)")
+    header(w, rs274, f"MIXED {moves} MOVES")
     w.line("G90 G21 G17 G40 G49 G80 G54")
     w.line("G00 X0. Y0. Z2.")
     w.line("G01 Z-1. F5000.")
@@ -168,15 +185,17 @@ def gen_mixed(path: str, moves: int, seed: int) -> None:
         mode = g
         i += 1
     w.line("G00 Z5.")
-    w.line("M30")
-    w.line("%")
+    footer(w, rs274)
     w.close()
     print(f"  mixed: worst arc end-radius deviation {worst:.4f} mm", file=sys.stderr)
 
 
 # ---------------------------------------------------------------------------------------------
-def gen_while(path: str, iterations: int) -> None:
+def gen_while(path: str, iterations: int, rs274: bool = False) -> None:
     """An ellipse (a = 50, b = 30, rotated 15 degrees) traced in 0.36-degree steps."""
+    if rs274:
+        gen_while_rs274(path, iterations)
+        return
     text = f"""%
 O0002 (WHILE LOOP {iterations} ITERATIONS)
 G90 G21 G17 G40 G49 G80 G54
@@ -207,11 +226,58 @@ M30
         f.write(text)
 
 
+def gen_while_rs274(path: str, iterations: int) -> None:
+    """The same loop for rs274: an O-word while, binary operations in brackets."""
+    text = f"""(WHILE LOOP {iterations} ITERATIONS)
+G90 G21 G17 G40 G49 G80 G54
+G00 X50. Y0. Z2.
+G01 Z-1. F3000.
+#100={iterations}
+#101=50.
+#102=30.
+#103=15.
+#104=0.36
+#1=0
+o100 while [#1 LT #100]
+#2=[#1*#104]
+#3=[#101*COS[#2]]
+#4=[#102*SIN[#2]]
+#5=COS[#103]
+#6=SIN[#103]
+#7=[#3*#5-#4*#6]
+#8=[#3*#6+#4*#5]
+G01 X#7 Y#8
+#1=[#1+1]
+o100 endwhile
+G00 Z5.
+M30
+"""
+    with open(path, "w", encoding="ascii", newline="\n") as f:
+        f.write(text)
+
+
 # ---------------------------------------------------------------------------------------------
-def gen_sub(path: str, calls: int) -> None:
+def gen_sub(path: str, calls: int, rs274: bool = False) -> None:
     """Main O0001: rows of 100 pockets 1 mm apart; O0100 cuts one 0.8 mm square and steps
     X+1 mm (G91), then returns to G90 and M99."""
     w = Writer(path)
+    body = ["G91 G01 Z-3. F3000.", "X0.8", "Y0.8", "X-0.8", "Y-0.8", "G00 Z3.", "X1.", "G90"]
+    if rs274:
+        w.line(f"(MAIN: {calls} SUBPROGRAM CALLS)")
+        w.line("o100 sub")
+        for b in body:
+            w.line(b)
+        w.line("o100 endsub")
+        w.line("G90 G21 G17 G40 G49 G80 G54")
+        w.line("G00 Z2.")
+        for c in range(calls):
+            if c % 100 == 0:
+                w.line(f"G90 G00 X0. Y{num((c // 100) % 100 * 1.0)}")
+            w.line("o100 call")
+        w.line("G00 Z5.")
+        w.line("M30")
+        w.close()
+        return
     w.line("%")
     w.line(f"O0001 (MAIN: {calls} SUBPROGRAM CALLS)")
     w.line("G90 G21 G17 G40 G49 G80 G54")
@@ -224,14 +290,8 @@ def gen_sub(path: str, calls: int) -> None:
     w.line("M30")
     w.line("")
     w.line("O0100 (POCKET STEP)")
-    w.line("G91 G01 Z-3. F3000.")
-    w.line("X0.8")
-    w.line("Y0.8")
-    w.line("X-0.8")
-    w.line("Y-0.8")
-    w.line("G00 Z3.")
-    w.line("X1.")
-    w.line("G90")
+    for b in body:
+        w.line(b)
     w.line("M99")
     w.line("%")
     w.close()
@@ -248,6 +308,8 @@ def main() -> int:
     ap.add_argument("--only", default="linear,mixed,while,sub",
                     help="comma-separated subset of: linear, mixed, while, sub")
     ap.add_argument("--seed", type=int, default=1, help="random seed of the mixed workload")
+    ap.add_argument("--dialect", choices=("fanuc", "rs274"), default="fanuc",
+                    help="fanuc: .nc files for ncvm; rs274: the same workloads as .ngc for LinuxCNC")
     a = ap.parse_args()
 
     wanted = [s.strip() for s in a.only.split(",") if s.strip()]
@@ -259,11 +321,13 @@ def main() -> int:
             ap.error("sizes must be positive")
     os.makedirs(a.outdir, exist_ok=True)
 
+    rs = a.dialect == "rs274"
+    ext = "ngc" if rs else "nc"
     jobs = {
-        "linear": (f"linear_{size_tag(a.lines)}.nc", lambda p: gen_linear(p, a.lines)),
-        "mixed": (f"mixed_{size_tag(a.mixed)}.nc", lambda p: gen_mixed(p, a.mixed, a.seed)),
-        "while": (f"while_{size_tag(a.iterations)}.nc", lambda p: gen_while(p, a.iterations)),
-        "sub": (f"sub_{size_tag(a.calls)}.nc", lambda p: gen_sub(p, a.calls)),
+        "linear": (f"linear_{size_tag(a.lines)}.{ext}", lambda p: gen_linear(p, a.lines, rs)),
+        "mixed": (f"mixed_{size_tag(a.mixed)}.{ext}", lambda p: gen_mixed(p, a.mixed, a.seed, rs)),
+        "while": (f"while_{size_tag(a.iterations)}.{ext}", lambda p: gen_while(p, a.iterations, rs)),
+        "sub": (f"sub_{size_tag(a.calls)}.{ext}", lambda p: gen_sub(p, a.calls, rs)),
     }
     for key in wanted:
         name, fn = jobs[key]

@@ -4,13 +4,16 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <unistd.h>
 #include <sstream>
+#include <thread>
+#include <unistd.h>
 
 #include "app/compare.hpp"
 #include "app/machine_state.hpp"
@@ -92,7 +95,11 @@ struct RunOutputs {
   std::string trace, state, output, machineState, stockOut, report;
 };
 
-int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
+// One run; what it would print goes to `out` (stdout) and `err` (stderr), so batch runs on
+// several threads can print each program's report whole, in command-line order.
+int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::string& out, std::string& err) {
+  auto outAt = std::back_inserter(out);
+  auto errAt = std::back_inserter(err);
   const std::string& tracePath = outs.trace;
   const std::string& statePath = outs.state;
   const std::string& outputPath = outs.output;
@@ -104,11 +111,13 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
   std::string stockDir = outs.stockOut;
   bool tempStock = false;
   if (stockDir.empty() && !outs.report.empty() && session.setup().stock.present) {
-    stockDir = (std::filesystem::temp_directory_path() / fmt::format("ncvm-report-{}", ::getpid())).string();
+    stockDir = (std::filesystem::temp_directory_path() /
+                fmt::format("ncvm-report-{}-{}", ::getpid(), std::hash<std::thread::id>{}(std::this_thread::get_id())))
+                   .string();
     tempStock = true;
   }
   if (!stockDir.empty()) session.simulateStock(stockDir);
-  for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
+  for (const auto& w : session.store().warnings()) fmt::format_to(errAt, "ncvm: warning: {}\n", w);
 
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<TraceWriter> trace;
@@ -142,46 +151,46 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
     writeFileAtomic(outs.report, htmlReport(r.state, fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label), stockDir));
   }
   if (tempStock) std::filesystem::remove_all(stockDir);
-  std::string out = !outputPath.empty() ? outputPath : session.setup().dprntPath;
+  std::string dprnt = !outputPath.empty() ? outputPath : session.setup().dprntPath;
   if (!r.printed.empty()) {
-    if (out.empty())
-      fmt::print(stderr, "ncvm: warning: DPRNT output discarded (give --output FILE or output.dprnt)\n");
+    if (dprnt.empty())
+      err += "ncvm: warning: DPRNT output discarded (give --output FILE or output.dprnt)\n";
     else
-      writeFileAtomic(out, r.printed);
+      writeFileAtomic(dprnt, r.printed);
   }
 
   const Program* main = session.main();
   if (!quiet) {
-    fmt::print("ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
+    fmt::format_to(outAt, "ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
                endReasonName(r.end));
     std::string cycle = fmt::format("{} (length/feed)", hms(r.stats.time));
     if (session.setup().timing.dynamic && r.timing)
       cycle = fmt::format("{} (modelled), {} (length/feed)", hms(r.timing->total().model),
                           hms(r.stats.time));
-    fmt::print("  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {}\n",
+    fmt::format_to(outAt, "  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {}\n",
                r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength,
                r.stats.rapidLength, r.stats.feedLength, cycle);
     for (const auto& w : r.warnings)
-      fmt::print("{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
-    if (!tracePath.empty()) fmt::print("  trace: {}\n", tracePath);
-    if (!statePath.empty()) fmt::print("  state: {}\n", statePath);
+      fmt::format_to(outAt, "{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
+    if (!tracePath.empty()) fmt::format_to(outAt, "  trace: {}\n", tracePath);
+    if (!statePath.empty()) fmt::format_to(outAt, "  state: {}\n", statePath);
     if (r.stock.is_object()) {
       const auto& st = r.stock;
       if (st.contains("deviation") && st["deviation"].is_object())
-        fmt::print("  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % within {}\n",
+        fmt::format_to(outAt, "  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % within {}\n",
                    st["deviation"]["max"].get<double>(), st["deviation"]["max_excess"].get<double>(),
                    st["deviation"]["max_gouge"].get<double>(), st["deviation"]["mean"].get<double>(),
                    100 * st["deviation"]["in_tolerance"].get<double>(), st["deviation"]["tolerance"].get<double>());
       if (st.contains("collisions") && !st["collisions"].empty())
-        fmt::print("  stock: {} collision(s), the first at {}:{}\n", st["collisions"].size(),
+        fmt::format_to(outAt, "  stock: {} collision(s), the first at {}:{}\n", st["collisions"].size(),
                    st["collisions"][0].value("file", std::string()), st["collisions"][0].value("line", 0));
-      if (!outs.stockOut.empty()) fmt::print("  stock: {}\n", outs.stockOut);
+      if (!outs.stockOut.empty()) fmt::format_to(outAt, "  stock: {}\n", outs.stockOut);
     }
-    if (!outs.report.empty()) fmt::print("  report: {}\n", outs.report);
-    if (!r.printed.empty() && !out.empty()) fmt::print("  output: {}\n", out);
+    if (!outs.report.empty()) fmt::format_to(outAt, "  report: {}\n", outs.report);
+    if (!r.printed.empty() && !dprnt.empty()) fmt::format_to(outAt, "  output: {}\n", dprnt);
   }
   if (r.alarm) {
-    fmt::print("{}\n", alarmLine(*r.alarm, session.files()));
+    fmt::format_to(outAt, "{}\n", alarmLine(*r.alarm, session.files()));
     return kExitAlarm;
   }
   return kExitOk;
@@ -191,7 +200,7 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
 // run: 3 when either ends in an alarm (its alarm line is printed), 2 on a usage error.
 int compareCommand(const CommonOptions& o, const std::string& a, const std::string& b, bool json) {
   Setup setup = makeSetup(o);
-  auto runOne = [&](const std::string& file, std::string& alarmText) {
+  auto runProgram = [&](const std::string& file, std::string& alarmText) {
     Session session(setup);
     CommonOptions one = o;
     one.programs = {file};
@@ -202,8 +211,8 @@ int compareCommand(const CommonOptions& o, const std::string& a, const std::stri
     return run;
   };
   std::string alarmA, alarmB;
-  ComparedRun ra = runOne(a, alarmA);
-  ComparedRun rb = runOne(b, alarmB);
+  ComparedRun ra = runProgram(a, alarmA);
+  ComparedRun rb = runProgram(b, alarmB);
   if (json)
     fmt::print("{}\n", dumpJson(compareJson(ra, rb, setup.timing.dynamic)));
   else
@@ -211,6 +220,82 @@ int compareCommand(const CommonOptions& o, const std::string& a, const std::stri
   for (const auto* line : {&alarmA, &alarmB})
     if (!line->empty()) fmt::print("{}\n", *line);
   return alarmA.empty() && alarmB.empty() ? kExitOk : kExitAlarm;
+}
+
+int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
+  std::string out, err;
+  int rc = 0;
+  try {
+    rc = runOne(o, outs, quiet, out, err);
+  } catch (...) {
+    std::fputs(err.c_str(), stderr);
+    throw;
+  }
+  std::fputs(err.c_str(), stderr);
+  std::fputs(out.c_str(), stdout);
+  return rc;
+}
+
+// `ncvm run --batch A.nc B.nc ...`: every file is a program of its own, run on its own
+// thread (--jobs, default all cores). --trace, --state and --output name folders; each
+// program writes STEM.jsonl, STEM.json and STEM.txt there. Reports are printed in
+// command-line order; the exit status is the worst of the runs (2 > 3 > 0).
+int batchCommand(const CommonOptions& o, const RunOutputs& dirs, bool quiet, unsigned jobs) {
+  const std::string& traceDir = dirs.trace;
+  const std::string& stateDir = dirs.state;
+  const std::string& outputDir = dirs.output;
+  if (!dirs.stockOut.empty() || !dirs.report.empty())
+    throw std::runtime_error("--stock-out and --report are for one program, not a batch");
+  if (!dirs.machineState.empty())
+    throw std::runtime_error("--machine-state cannot be shared by the programs of a batch");
+  const size_t n = o.programs.size();
+  std::vector<std::string> stems(n);
+  for (size_t k = 0; k < n; ++k) {
+    stems[k] = std::filesystem::path(o.programs[k]).stem().string();
+    for (size_t j = 0; j < k; ++j)
+      if (stems[j] == stems[k])
+        throw std::runtime_error(fmt::format("{} and {}: batch outputs would share the name {}",
+                                             o.programs[j], o.programs[k], stems[k]));
+  }
+  for (const std::string* dir : {&traceDir, &stateDir, &outputDir})
+    if (!dir->empty()) std::filesystem::create_directories(*dir);
+  auto in = [](const std::string& dir, const std::string& stem, const char* ext) {
+    return dir.empty() ? std::string() : (std::filesystem::path(dir) / (stem + ext)).string();
+  };
+  std::vector<std::string> outs(n), errs(n);
+  std::vector<int> codes(n, kExitOk);
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t k = next++; k < n; k = next++) {
+      CommonOptions one = o;
+      one.programs = {o.programs[k]};
+      try {
+        RunOutputs files;
+        files.trace = in(traceDir, stems[k], ".jsonl");
+        files.state = in(stateDir, stems[k], ".json");
+        files.output = in(outputDir, stems[k], ".txt");
+        codes[k] = runOne(one, files, quiet, outs[k], errs[k]);
+      } catch (const SetupError& e) {
+        errs[k] += fmt::format("ncvm: setup error: {}{}\n", e.what(),
+                               e.line ? fmt::format(" (line {})", e.line) : "");
+        codes[k] = kExitUsage;
+      } catch (const std::exception& e) {
+        errs[k] += fmt::format("ncvm: {}: {}\n", o.programs[k], e.what());
+        codes[k] = kExitUsage;
+      }
+    }
+  };
+  if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < std::min<size_t>(jobs, n); ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  int rc = kExitOk;
+  for (size_t k = 0; k < n; ++k) {
+    std::fputs(errs[k].c_str(), stderr);
+    std::fputs(outs[k].c_str(), stdout);
+    if (codes[k] == kExitUsage || (codes[k] == kExitAlarm && rc == kExitOk)) rc = codes[k];
+  }
+  return rc;
 }
 
 int checkCommand(const CommonOptions& o, bool json) {
@@ -371,7 +456,8 @@ int main(int argc, char** argv) {
 
   CommonOptions runOpts;
   RunOutputs outs;
-  bool quiet = false;
+  bool quiet = false, batch = false;
+  unsigned jobs = 0;
   auto* run = app.add_subcommand("run", "run a program and report what the machine does");
   addCommon(run, runOpts);
   run->add_option("--trace", outs.trace, "write the event trace (JSON Lines)");
@@ -383,6 +469,10 @@ int main(int argc, char** argv) {
   run->add_option("--machine-state", outs.machineState,
                   "persistent memory (#500-#999, offsets, part counters): loaded if it exists, saved after the run");
   run->add_flag("-q,--quiet", quiet, "print only alarms");
+  run->add_flag("--batch", batch,
+                "run every PROGRAM file as a program of its own, in parallel; --trace, --state and --output "
+                "then name folders (STEM.jsonl, STEM.json, STEM.txt)");
+  run->add_option("-j,--jobs", jobs, "threads for --batch (default: all cores)");
 
   CommonOptions checkOpts;
   bool json = false;
@@ -445,6 +535,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   try {
+    if (run->parsed() && batch) return batchCommand(runOpts, outs, quiet, jobs);
     if (run->parsed()) return runCommand(runOpts, outs, quiet);
     if (check->parsed()) return checkCommand(checkOpts, json);
     if (sweep->parsed()) return sweepCommand(sweepOpts, varies, sweepOut, sweepCsvOut);

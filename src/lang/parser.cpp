@@ -21,9 +21,45 @@ bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' ||
 
 // Addresses that take no decimal point (fanuc-reference A.2). G is checked against the code
 // table by the executor, since G54.1 and friends are legal.
-bool forbidsPoint(char letter) { return std::strchr("NOPMSTHDL", letter) != nullptr; }
+// A switch, not strchr: this runs for every word of every block.
+bool forbidsPoint(char letter) {
+  switch (letter) {
+    case 'N':
+    case 'O':
+    case 'P':
+    case 'M':
+    case 'S':
+    case 'T':
+    case 'H':
+    case 'D':
+    case 'L':
+      return true;
+    default:
+      return false;
+  }
+}
 // Addresses that take no sign.
-bool forbidsMinus(char letter) { return std::strchr("GMNOSTLHDP", letter) != nullptr; }
+bool forbidsMinus(char letter) {
+  switch (letter) {
+    case 'G':
+    case 'M':
+    case 'N':
+    case 'O':
+    case 'S':
+    case 'T':
+    case 'L':
+    case 'H':
+    case 'D':
+    case 'P':
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Exact powers of ten: every one up to 10^22 is a double without rounding.
+constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 struct FnName {
   const char* name;
@@ -166,6 +202,12 @@ ParsedFile Compiler::run() {
 }
 
 void Compiler::parseLine(size_t b, size_t e) {
+  // Most lines hold none of '(', ';' and '%': three memchr calls find that out quickly.
+  const void* line = s_.data() + b;
+  if (!std::memchr(line, '(', e - b) && !std::memchr(line, ';', e - b) && !std::memchr(line, '%', e - b)) {
+    parseBlock(b, e);
+    return;
+  }
   // Split at ';' (the EOB of printed listings) and '%' outside comments.
   size_t start = b;
   bool inComment = false;
@@ -389,38 +431,55 @@ void Compiler::commitBlock() {
 }
 
 double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
-  size_t start = i_;
+  // One pass: scan the digits and build the value. When the digits form an integer below
+  // 2^53 and at most 22 of them follow the point, mantissa / 10^frac is one correctly rounded
+  // division of two exact doubles, the same double from_chars returns (Clinger's fast path).
+  // Longer numbers fall back to from_chars.
+  // Locals, not peek(): the loop runs for every character of every number.
+  const char* text = s_.data();
+  size_t start = i_, i = i_, end = end_;
   hasPoint = false;
   intDigits = 0;
-  bool leading = true;
-  if (peek() == '+' || peek() == '-') ++i_;
-  while (true) {
-    char c = peek();
+  bool leading = true, neg = false, anyDigit = false;
+  uint64_t mantissa = 0;
+  int significant = 0, frac = 0;
+  if (i < end && (text[i] == '+' || text[i] == '-')) neg = text[i] == '-', ++i;
+  for (; i < end; ++i) {
+    char c = text[i];
     if (isDigit(c)) {
+      anyDigit = true;
       if (!hasPoint) {
         if (c != '0' || !leading) ++intDigits, leading = false;
+      } else {
+        ++frac;
       }
-      ++i_;
+      if (mantissa != 0 || c != '0') ++significant;
+      if (significant <= 19) mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
     } else if (c == '.') {
-      if (hasPoint) fail(AlarmId::IllegalDecimalPoint, "two decimal points");
+      if (hasPoint) {
+        i_ = i;
+        fail(AlarmId::IllegalDecimalPoint, "two decimal points");
+      }
       hasPoint = true;
-      ++i_;
     } else {
       break;
     }
   }
-  std::string_view text = s_.substr(start, i_ - start);
-  if (!text.empty() && text[0] == '+') text.remove_prefix(1);
-  bool anyDigit = false;
-  for (char c : text) anyDigit |= isDigit(c);
+  i_ = i;
   if (!anyDigit) return 0.0;  // "X." reads as zero
+  if (significant <= 19 && mantissa <= (uint64_t{1} << 53) && frac <= 22) {
+    double v = static_cast<double>(mantissa) / kPow10[frac];
+    return neg ? -v : v;
+  }
+  std::string_view num = s_.substr(start, i_ - start);
+  if (num[0] == '+') num.remove_prefix(1);
   double v = 0;
   std::string buf;
-  if (text.back() == '.') {
-    buf = std::string(text) + "0";
-    text = buf;
+  if (num.back() == '.') {
+    buf = std::string(num) + "0";
+    num = buf;
   }
-  auto res = std::from_chars(text.data(), text.data() + text.size(), v);
+  auto res = std::from_chars(num.data(), num.data() + num.size(), v);
   if (res.ec != std::errc()) fail(AlarmId::FloatOverflow, "number out of range");
   return v;
 }

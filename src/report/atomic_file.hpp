@@ -3,6 +3,7 @@
 // flush it to disk, then rename it over the target. A kill at any point leaves either the
 // old file or the new one.
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -13,7 +14,8 @@ void writeFileAtomic(const std::string& path, std::string_view data);
 
 // For large outputs written as they are produced (the trace): open a temporary file,
 // stream into it, then commit() renames it into place. The destructor removes an
-// uncommitted temporary.
+// uncommitted temporary. A path that exists and is not a regular file (/dev/null, a pipe,
+// /dev/stdout) is written directly: renaming over a device would replace it.
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
@@ -26,6 +28,8 @@ class AtomicFile {
  private:
   std::string path_, temp_;
   std::FILE* file_ = nullptr;
+  bool direct_ = false;             // writing straight into a device or pipe
+  std::unique_ptr<char[]> buffer_;  // per file: batch runs write traces from several threads
 };
 
 }  // namespace ncvm

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cstring>
+
 #include "core/alarm.hpp"
+#include "report/json_number.hpp"
 
 namespace ncvm {
 
@@ -101,9 +104,13 @@ void TraceWriter::begin(const char* type, const EventOrigin& at) {
   buf_ += type;
   buf_ += "\",\"file\":";
   buf_ += fileName(at.file);
-  fmt::format_to(std::back_inserter(buf_), ",\"line\":{},\"n\":", at.line);
-  if (at.n >= 0) fmt::format_to(std::back_inserter(buf_), "{}", at.n);
-  else buf_ += "null";
+  buf_ += ",\"line\":";
+  number(static_cast<int64_t>(at.line));
+  buf_ += ",\"n\":";
+  if (at.n >= 0)
+    number(static_cast<int64_t>(at.n));
+  else
+    buf_ += "null";
   buf_ += ",\"prog\":";
   if (at.programName) escapeInto(buf_, *at.programName);
   else buf_ += "null";
@@ -115,40 +122,90 @@ void TraceWriter::end() {
   if (written_ + buf_.size() > maxBytes_) throw AlarmError(AlarmId::TraceLimit, "limits.max_trace_bytes");
 }
 
+void TraceWriter::number(double v) {
+  char tmp[kNumberChars];
+  buf_.append(tmp, static_cast<size_t>(formatDouble(tmp, v) - tmp));
+}
+
+void TraceWriter::number(int64_t v) {
+  char tmp[kNumberChars];
+  buf_.append(tmp, static_cast<size_t>(formatInt(tmp, v) - tmp));
+}
+
+namespace {
+// Writers into a caller's buffer: a move is formatted on the stack and appended once.
+template <size_t N>
+char* put(char* p, const char (&literal)[N]) {
+  std::memcpy(p, literal, N - 1);
+  return p + N - 1;
+}
+
+char* putAxes(char* p, std::string_view key, const double* a, int n) {
+  *p++ = ',';
+  *p++ = '"';
+  std::memcpy(p, key.data(), key.size());
+  p += key.size();
+  p = put(p, "\":[");
+  for (int k = 0; k < n; ++k) {
+    if (k) *p++ = ',';
+    p = formatDouble(p, a[k]);
+  }
+  *p++ = ']';
+  return p;
+}
+}  // namespace
+
+int TraceWriter::reportedAxes() const { return axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_); }
+
 void TraceWriter::axes(const char* key, const AxisArray& a) {
-  fmt::format_to(std::back_inserter(buf_), ",\"{}\":[{},{},{}", key, a[0], a[1], a[2]);
-  for (int k = 3; k < axes_; ++k) fmt::format_to(std::back_inserter(buf_), ",{}", a[static_cast<size_t>(k)]);
-  buf_ += ']';
+  char tmp[16 + kMaxAxes * (kNumberChars + 1)];
+  buf_.append(tmp, static_cast<size_t>(putAxes(tmp, key, a.data(), reportedAxes()) - tmp));
 }
 
 void TraceWriter::string(std::string_view s) { escapeInto(buf_, s); }
 
 void TraceWriter::onMove(const MoveEvent& e) {
   begin("move", e.at);
-  buf_ += ",\"mode\":\"";
-  buf_ += moveModeName(e.mode);
-  buf_ += '"';
-  axes("start", e.start);
-  axes("end", e.end);
-  axes("mstart", e.mstart);
-  axes("mend", e.mend);
-  fmt::format_to(std::back_inserter(buf_),
-                 ",\"feed\":{},\"length\":{},\"time\":{},\"time_simple\":{}", e.feed, e.length,
-                 e.time, e.timeSimple >= 0 ? e.timeSimple : e.time);
-  if (e.arc)
-    fmt::format_to(std::back_inserter(buf_), ",\"center\":[{},{},{}],\"plane\":{}", e.center[0], e.center[1],
-                   e.center[2], e.plane);
-  if (e.compensated) axes("prog_end", e.programmedEnd);
-  if (e.nose) axes("nose_end", e.noseEnd);
-  if (e.thread) buf_ += ",\"thread\":true";
-  if (e.pathPoints > 0) {
-    buf_ += ",\"path\":[";
-    for (int k = 0; k < e.pathPoints; ++k) {
-      const AxisArray& p = e.path[static_cast<size_t>(k)];
-      fmt::format_to(std::back_inserter(buf_), "{}[{},{},{}]", k ? "," : "", p[0], p[1], p[2]);
-    }
-    buf_ += ']';
+  // Everything after the origin has a bounded size: six axis arrays, the centre, the path
+  // points and a few numbers, each at most kNumberChars long.
+  char tmp[4096];
+  char* p = put(tmp, ",\"mode\":\"");
+  std::string_view mode = moveModeName(e.mode);
+  std::memcpy(p, mode.data(), mode.size());
+  p += mode.size();
+  *p++ = '"';
+  const int n = reportedAxes();
+  p = putAxes(p, "start", e.start.data(), n);
+  p = putAxes(p, "end", e.end.data(), n);
+  p = putAxes(p, "mstart", e.mstart.data(), n);
+  p = putAxes(p, "mend", e.mend.data(), n);
+  p = formatDouble(put(p, ",\"feed\":"), e.feed);
+  p = formatDouble(put(p, ",\"length\":"), e.length);
+  p = formatDouble(put(p, ",\"time\":"), e.time);
+  p = formatDouble(put(p, ",\"time_simple\":"), e.timeSimple >= 0 ? e.timeSimple : e.time);
+  if (e.arc) {
+    p = putAxes(p, "center", e.center.data(), 3);
+    p = formatInt(put(p, ",\"plane\":"), e.plane);
   }
+  if (e.compensated) p = putAxes(p, "prog_end", e.programmedEnd.data(), n);
+  if (e.nose) p = putAxes(p, "nose_end", e.noseEnd.data(), n);
+  if (e.thread) p = put(p, ",\"thread\":true");
+  if (e.pathPoints > 0) {
+    p = put(p, ",\"path\":[");
+    for (int k = 0; k < e.pathPoints && k < kMaxAxes; ++k) {
+      if (k) *p++ = ',';
+      const AxisArray& q = e.path[static_cast<size_t>(k)];
+      *p++ = '[';
+      p = formatDouble(p, q[0]);
+      *p++ = ',';
+      p = formatDouble(p, q[1]);
+      *p++ = ',';
+      p = formatDouble(p, q[2]);
+      *p++ = ']';
+    }
+    *p++ = ']';
+  }
+  buf_.append(tmp, static_cast<size_t>(p - tmp));
   end();
 }
 

@@ -34,6 +34,9 @@ class TraceWriter final : public EventSink {
   void begin(const char* type, const EventOrigin& at);
   void end();
   void axes(const char* key, const AxisArray& a);
+  void number(double v);  // exactly as fmt's "{}" (report/json_number.hpp), faster
+  void number(int64_t v);
+  int reportedAxes() const;  // axes_ clamped to 3..kMaxAxes
   void string(std::string_view s);
   const std::string& fileName(uint32_t id);
 

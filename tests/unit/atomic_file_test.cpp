@@ -3,6 +3,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "report/atomic_file.hpp"
 
@@ -41,4 +44,18 @@ TEST(AtomicFile, UncommittedStreamLeavesOldFile) {
   }
   EXPECT_EQ(slurp(path), "complete");
   std::filesystem::remove(path);
+}
+
+TEST(AtomicFile, DeviceIsWrittenDirectly) {
+  // `--trace /dev/null` must not create /dev/null.tmp.PID nor rename anything over /dev/null.
+  const std::string temp = "/dev/null.tmp." + std::to_string(::getpid());
+  {
+    AtomicFile f("/dev/null");
+    std::fputs("discarded", f.get());
+    bool madeTemp = std::filesystem::exists(temp);
+    ASSERT_FALSE(madeTemp);  // without the fix: leaving the scope removes the temp, no rename
+    f.commit();
+  }
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  EXPECT_FALSE(std::filesystem::exists(temp));
 }

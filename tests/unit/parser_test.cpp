@@ -1,5 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
+#include <string>
+#include <vector>
+
 #include "lang/parser.hpp"
 
 using namespace ncvm;
@@ -74,4 +79,49 @@ TEST(Parser, PercentWithProgramOnSameLine) {
   Program p = one("%O1200(TOKARKA)\nN10 G21\n%\n");
   EXPECT_EQ(p.number, 1200);
   EXPECT_EQ(p.blocks.size(), 1u);
+}
+
+// The one-pass number reader must give the very double std::from_chars gives, for the
+// short numbers it computes itself and the long ones it hands to from_chars.
+TEST(Parser, NumbersMatchFromChars) {
+  std::vector<std::string> texts = {"0",
+                                    "-0",
+                                    "0.",
+                                    ".5",
+                                    "-.5",
+                                    "5.",
+                                    "+3.25",
+                                    "0.1",
+                                    "0.3",
+                                    "-120.005",
+                                    "99999.999",
+                                    "0.000001",
+                                    "123456789.",
+                                    "1.7976931",
+                                    "2.2250738585072014",
+                                    "9.007199254740993",
+                                    "123456789.123456789123",
+                                    "0.1000000000000000055511151231257827",
+                                    "000000123.4500000",
+                                    "4.5035996273704975"};
+  uint64_t k = 12345;
+  for (int i = 0; i < 20000; ++i) {
+    k = k * 6364136223846793005ULL + 1442695040888963407ULL;
+    int ip = static_cast<int>((k >> 20) % 1000000);
+    int fd = static_cast<int>((k >> 8) % 8);  // 0..7 fraction digits
+    std::string frac = std::to_string((k >> 40) % 100000000).substr(0, static_cast<size_t>(fd));
+    texts.push_back(((k & 1) ? "-" : "") + std::to_string(ip) + "." + frac);
+  }
+  std::string text = "O1\n";
+  for (const auto& t : texts) text += "X" + t + "\n";
+  Program p = one(text.c_str());
+  ASSERT_EQ(p.words.size(), texts.size());
+  for (size_t i = 0; i < texts.size(); ++i) {
+    std::string t = texts[i];
+    if (t[0] == '+') t.erase(0, 1);
+    if (t.back() == '.') t += "0";
+    double want = 0;
+    std::from_chars(t.data(), t.data() + t.size(), want);
+    EXPECT_EQ(std::bit_cast<uint64_t>(p.words[i].value), std::bit_cast<uint64_t>(want)) << texts[i];
+  }
 }
