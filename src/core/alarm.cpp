@@ -110,7 +110,8 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::IllegalScaleRate, "ILLEGAL SCALE RATE",
        "G51 scale factor (P, I, J, K or parameters 5411/5421) of 0 or out of range."},
       {AlarmId::IllegalPlaneForRotation, "ILLEGAL PLANE SELECTED",
-       "Under G68 an arc or cutter compensation in a plane other than the rotation plane."},
+       "Under G68 an arc, cutter compensation or a drilling cycle in a plane other than the "
+       "rotation plane."},
       {AlarmId::IllegalSInRigidTap, "ILLEGAL S CODE COMMAND",
        "Rigid tapping (M29 before G84/G74, lathe G84/G88) with no spindle speed S."},
       {AlarmId::OvertravelPlus, "+ OVERTRAVEL ( SOFT 1 )",

@@ -177,9 +177,8 @@ bool Executor::crcPush(crc::InSeg s, const Words& w) {
   if (crcCorner_) {
     CrcCorner h = *crcCorner_;
     crcCorner_.reset();
-    if (h.seg.side != s.side || h.seg.radius != s.radius)
-      throw AlarmError(AlarmId::ImproperGCode,
-                       "a side or D change after ,C/,R is not supported by ncvm yet");
+    // A side or D change in the next block takes effect after the corner, which is a block
+    // of its own with the ,C/,R block's side and D (the change happens over the next block).
     cornerw::Corner c;
     try {
       c = cornerw::place({h.seg.kind, h.seg.start, h.seg.end, h.seg.center},

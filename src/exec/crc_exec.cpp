@@ -178,13 +178,15 @@ std::array<int64_t, kMaxAxes> Executor::crcTransform(crc::InSeg& s, const std::a
   map(programmed_, s.start);
   map(target, s.end);
   if (s.kind != crc::Kind::Line) map(programmed_, s.center);
-  if (s.hasIJK) {
+  auto mapDir = [&](crc::P2& v) {
     xform::P3 d{};
-    d[pi.u] = s.ijk.u;
-    d[pi.v] = s.ijk.v;
+    d[pi.u] = v.u;
+    d[pi.v] = v.v;
     d = xf_.applyVector(d);
-    s.ijk = {d[pi.u], d[pi.v]};
-  }
+    v = {d[pi.u], d[pi.v]};
+  };
+  if (s.hasIJK) mapDir(s.ijk);
+  if (s.cornerHasDir) mapDir(s.cornerDir);
   if (xf_.flips(modal_.plane)) {
     if (s.kind != crc::Kind::Line) s.kind = s.kind == crc::Kind::Cw ? crc::Kind::Ccw : crc::Kind::Cw;
     if (s.side != crc::Side::Off) s.side = s.side == crc::Side::Left ? crc::Side::Right : crc::Side::Left;
@@ -226,6 +228,8 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       }
       s.tag = tag;
       s.cornerArc = g39Pending_;
+      s.cornerHasDir = g39Pending_ && g39HasDir_;
+      s.cornerDir = g39Dir_;
       if (side == crc::Side::Off && w.any("IJK") && !arc) {
         s.hasIJK = true;
         s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0, w.has("IJK"[pi.v]) ? w.value("IJK"[pi.v]) : 0.0};

@@ -29,8 +29,12 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
   const char axisLetter = "XYZ"[axis];
   const char reLetter = 'R';
   int code = modal_.g[9];
-  std::array<int64_t, kMaxAxes> here{};
-  for (size_t k = 0; k < kMaxAxes; ++k) here[k] = machine_[k] - offset_[k];
+  // Hole positions and levels are program coordinates; under G51.1/G51/G68 each hole and
+  // level goes through the transforms (drillOneHole runs in the tool's coordinates).
+  if (xf_.active() && xf_.rotation && xf_.rotPlane != modal_.plane)
+    throw AlarmError(AlarmId::IllegalPlaneForRotation,
+                     fmt::format("canned cycle in G{} under G68 in G{}", modal_.plane, xf_.rotPlane));
+  const std::array<int64_t, kMaxAxes> here = programmedHere();
 
   if (cycleCommanded && (!cycle_.active || cycle_.axis != axis)) {
     // Entering cycle mode: the initial level is where the drilling axis is now.
@@ -72,7 +76,7 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
   Words planeWords = w;
   planeWords.present &= ~(Words::bit(axisLetter));
   if (lathe_) planeWords.present &= ~Words::bit("UVW"[axis]);
-  axisTargets(planeWords, planeTarget, mask);
+  axisTargets(planeWords, planeTarget, mask, moveBase());
   std::array<int64_t, kMaxAxes> step{};
   for (size_t k = 0; k < kMaxAxes; ++k) step[k] = planeTarget[k] - here[k];
 
@@ -81,14 +85,28 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
     std::array<int64_t, kMaxAxes> hole = first;
     for (size_t k = 0; k < kMaxAxes; ++k)
       if (k != A) hole[k] = modal_.incremental ? first[k] + step[k] * (n + 1) : planeTarget[k];
-    drillOneHole(hole, code, axis);
+    if (!xf_.active()) {
+      drillOneHole(hole, code, axis, cycle_.initial, cycle_.r, cycle_.bottom);
+      continue;
+    }
+    // Under a transform: the hole and the three levels as the tool sees them. Q, d and the
+    // G76/G87 shift stay as programmed (not scaled; docs/fanuc-decisions.md).
+    auto level = [&](int64_t z) {
+      std::array<int64_t, kMaxAxes> p = hole;
+      p[A] = z;
+      return transformed(p)[A];
+    };
+    drillOneHole(transformed(hole), code, axis, level(cycle_.initial), level(cycle_.r),
+                 level(cycle_.bottom));
+    programmed_ = hole;
+    programmed_[A] = modal_.g[10] != 990 || code == 870 ? cycle_.initial : cycle_.r;
   }
   return true;
 }
 
-void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis) {
+void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis,
+                            int64_t initial, int64_t rLevel, int64_t bottom) {
   const auto A = static_cast<size_t>(axis);
-  const int64_t bottom = cycle_.bottom, rLevel = cycle_.r, initial = cycle_.initial;
   const bool toInitial = modal_.g[10] != 990;
   auto at = [&](int64_t level) {
     std::array<int64_t, kMaxAxes> p = hole;

@@ -281,7 +281,9 @@ class Executor {
   DrillCycle cycle_;
   void cancelCycle();
   bool drillCycle(const Words& w, bool cycleCommanded);
-  void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis);
+  // hole: where the tool drills (after any transform); the levels likewise.
+  void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis,
+                    int64_t initial, int64_t rLevel, int64_t bottom);
   bool rigidTap_ = false;  // M29 given: the next G84/G74 (lathe G84/G88) is rigid tapping
   // lathe_drill_cycles.cpp
   bool latheDrillCycle(const Words& w, bool cycleCommanded);
@@ -368,6 +370,8 @@ class Executor {
 
   bool g39Pending_ = false;   // G39 read: the next compensated block starts with a corner arc
   EventOrigin g39Origin_;
+  bool g39HasDir_ = false;  // G39 I/J/K: the direction the corner arc ends perpendicular to
+  crc::P2 g39Dir_;
 
   // transforms.cpp: G51.1 mirror, G51 scaling, G68 rotation (mill)
   xform::Transform xf_;

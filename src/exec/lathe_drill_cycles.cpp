@@ -100,7 +100,7 @@ bool Executor::latheDrillCycle(const Words& w, bool cycleCommanded) {
       bool inc = modal_.incremental || (kInc[k] && planeWords.has(kInc[k]));
       hole[k] = inc ? first[k] + (planeTarget[k] - first[k]) * (n + 1) : planeTarget[k];
     }
-    drillOneHole(hole, body, axis);
+    drillOneHole(hole, body, axis, cycle_.initial, cycle_.r, cycle_.bottom);
   }
   return true;
 }

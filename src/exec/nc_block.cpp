@@ -390,10 +390,17 @@ void Executor::execNc(const Block& b) {
       break;
     case 390:
       // G39 corner arc: the next compensated block starts with an arc around its corner.
-      if (w.any("IJK")) throw AlarmError(AlarmId::ImproperGCode, "G39 with I/J/K is not supported by ncvm yet");
       if (crc_ && crc_->active()) {
         g39Pending_ = true;
         g39Origin_ = origin_;
+        // I/J/K in the plane (G17 I J, G18 K I, G19 J K), incremental from the corner.
+        const xform::PlaneAxes pa = xform::planeAxes(modal_.plane);
+        auto ijk = [&](size_t k) {
+          const char c = "IJK"[k];
+          return w.has(c) ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), static_cast<int>(k))) : 0.0;
+        };
+        g39HasDir_ = w.any("IJK");
+        g39Dir_ = {ijk(pa.u), ijk(pa.v)};
       }
       break;
     case 100:

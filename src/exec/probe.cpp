@@ -13,8 +13,12 @@ void Executor::skipMove(const Words& w) {
   if (modal_.g[7] != 400) throw AlarmError(AlarmId::CannotG31InCompensation);
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
-  if (!axisTargets(w, target, mask)) return;
+  if (!axisTargets(w, target, mask, moveBase())) return;
   double feed = effectiveFeed();
+  // Under G51.1/G51/G68 the probe moves toward the transformed target; the latch below is
+  // mapped back to the program's coordinates (docs/fanuc-decisions.md).
+  const std::array<int64_t, kMaxAxes> programTarget = target;
+  target = transformed(target);
 
   // The probe is a sphere at the tool tip: the stylus ball of the probe tool, otherwise the
   // tool's own diameter from [tools].
@@ -55,13 +59,21 @@ void Executor::skipMove(const Words& w) {
   emitMove(e, fromM, toM);
   machine_ = toM;
 
+  // The program continues from the contact point in its own coordinates (without a
+  // contact: from the programmed end point).
+  if (!xf_.active()) {
+    for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+  } else if (t) {
+    untransformProgrammed();
+  } else {
+    programmed_ = programTarget;
+  }
   // The control latches the position in its detection unit: round to the least increment.
   for (int k = 0; k < kMaxAxes; ++k) {
     auto s = static_cast<size_t>(k);
     int64_t per = modal_.unit == InputUnit::Inch ? nmPerIncInch_[s] : nmPerIncMm_[s];
-    int64_t work = machine_[s] - offset_[s];
-    skip_[s] = static_cast<int64_t>(std::llround(static_cast<double>(work) / static_cast<double>(per))) * per;
-    programmed_[s] = work;
+    double work = static_cast<double>(programmed_[s]);
+    skip_[s] = static_cast<int64_t>(std::llround(work / static_cast<double>(per))) * per;
   }
   SkipEvent ev;
   ev.at = origin_;

@@ -68,10 +68,6 @@ void Executor::transformRestrictions(int oneShot, bool workChanged) const {
     what =
         "changing the coordinate system (G52, G54-G59, G92) in G51/G51.1/G68 mode: cancel the "
         "transform first";
-  else if (oneShot == 310)
-    what = "G31 in G51/G51.1/G68 mode is not supported by ncvm yet";
-  else if (modal_.g[9] != 800)
-    what = "canned cycles in G51/G51.1/G68 mode are not supported by ncvm yet";
   if (what) throw AlarmError(AlarmId::ImproperGCode, what);
 }
 
@@ -128,17 +124,23 @@ bool Executor::transformBlock(const Words& w, int oneShot) {
         throw AlarmError(AlarmId::IllegalScaleRate, fmt::format("{} = {}", c, f));
       return f;
     };
-    auto param = [&](const char* key) {
-      double v = setup_.param(key, -1);
-      return v < 0 ? 1.0 : v * unit;
+    auto param = [&](const std::string& key, double fallback) {
+      auto it = setup_.parameters.find(key);
+      return it == setup_.parameters.end() ? fallback : it->second * unit;
     };
     xform::P3 scale{1, 1, 1};
     if (w.any("IJK")) {
-      for (size_t k = 0; k < 3; ++k) scale[k] = factor("IJK"[k], param("5421"), true);
+      // 5421 is an axis parameter (5421.X); a plain 5421 applies to every axis.
+      const double all = param("5421", 1.0);
+      for (size_t k = 0; k < 3; ++k)
+        scale[k] = factor("IJK"[k], param(fmt::format("5421.{}", kAxis[k]), all), true);
     } else {
-      double p = factor('P', param("5411"), false);
+      double p = factor('P', param("5411", 1.0), false);
       scale = {p, p, p};
     }
+    // 5401#0 SCLx = 0 for an axis: that axis is not scaled (unset: scaled).
+    for (size_t k = 0; k < 3; ++k)
+      if (setup_.param(fmt::format("5401#0.{}", kAxis[k]), 1) == 0) scale[k] = 1;
     for (size_t k = 0; k < 3; ++k)
       xf_.scaleAt[k] = w.has(kAxis[k]) ? absNm(kAxis[k], k) : static_cast<double>(here[k]);
     xf_.scale = scale;

@@ -29,6 +29,14 @@ bool isParameterNumber(const std::string& key) {
   return key.size() == i + 2 && key[i] == '#' && key[i + 1] >= '0' && key[i + 1] <= '7';
 }
 
+// An axis-type parameter for one axis: "5421.X", "5401#0.Z".
+bool isAxisParameter(const std::string& key) {
+  auto dot = key.rfind('.');
+  return dot != std::string::npos && dot + 2 == key.size() &&
+         std::string("XYZABC").find(key[dot + 1]) != std::string::npos &&
+         isParameterNumber(key.substr(0, dot));
+}
+
 using SettingValue = std::variant<bool, double, std::string, std::vector<double>>;
 
 struct Where {
@@ -118,11 +126,12 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     }
     return;
   }
-  if (head == "parameters" || (dot == std::string::npos && (isParameterNumber(key) ||
-                                                             parameterAliases().count(key)))) {
+  if (head == "parameters" || isAxisParameter(key) ||
+      (dot == std::string::npos && (isParameterNumber(key) || parameterAliases().count(key)))) {
     std::string p = head == "parameters" ? rest : key;
     if (auto it = parameterAliases().find(p); it != parameterAliases().end()) p = it->second;
-    if (!isParameterNumber(p)) bad(w, "a parameter is a number like 3401#0 or 3410, or an alias (DPI, NAT, LRP, ...)");
+    if (!isParameterNumber(p) && !isAxisParameter(p))
+      bad(w, "a parameter is a number like 3401#0 or 3410 (5421.X for one axis), or an alias (DPI, NAT, LRP, ...)");
     s.parameters[p] = asNumber(v, w);
     return;
   }

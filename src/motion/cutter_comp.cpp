@@ -116,7 +116,7 @@ struct Compensator::Impl {
   // its vector stays, so the next block starts from where the tool is.
   void startAfterBreak(const InSeg& b) {
     if (b.cornerArc) {
-      P2 to = offsetPoint(b, b.start, sideSign(b.side) * vecRadius, eps());
+      P2 to = cornerArcEnd(b, sideSign(b.side) * vecRadius);
       emitArc(tool, to, b, sideSign(b.side) * vecRadius);
       tool = to;
     }
@@ -124,13 +124,20 @@ struct Compensator::Impl {
   }
 
   // G39: the previous block ends perpendicular to itself, then an arc of radius r around the
-  // programmed corner turns the vector until it is perpendicular to the next block.
+  // programmed corner turns the vector until it is perpendicular to the next block (with
+  // I/J: to the left (G41) or right (G42) of that direction). The next block starts there.
   void cornerArc(const Held& a, double dA, const InSeg& b, double dB) {
     P2 from = offsetPoint(a.seg, a.seg.end, dA, eps());
-    P2 to = offsetPoint(b, b.start, dB, eps());
+    P2 to = cornerArcEnd(b, dB);
     emitBlock(a, from);
     emitArc(from, to, b, dB);
     held = Held{b, to, false};
+  }
+
+  P2 cornerArcEnd(const InSeg& b, double d) const {
+    if (b.cornerHasDir && len(b.cornerDir) > eps())
+      return b.start + d * leftNormal(unit(b.cornerDir));
+    return offsetPoint(b, b.start, d, eps());
   }
 
   void emitArc(P2 from, P2 to, const InSeg& b, double d) {

@@ -35,6 +35,9 @@ struct InSeg {
   double radius = 0;      // D value in effect (program units; negative swaps sides)
   int tag = -1;           // caller's id for the block (returned on the output)
   bool cornerArc = false; // G39 in this block (a corner arc at its start)
+  // G39 I J (K): the corner arc ends perpendicular to this direction instead of to the
+  // block's start (16/18-C manual: the new vector is at right angles to (I, J)).
+  bool cornerHasDir = false; P2 cornerDir;
   bool hasIJK = false; P2 ijk;  // G40 with I/J/K: the direction the cancel vector points
 };
 
