@@ -11,6 +11,7 @@
 #include "exec/executor.hpp"
 #include "exec/words.hpp"
 #include "motion/crc_geom.hpp"
+#include "motion/tip_direction.hpp"
 
 namespace ncvm {
 
@@ -35,26 +36,8 @@ lathe::Pt minus(const lathe::Pt& a, const lathe::Pt& b) {
 // Where the imaginary tip lies relative to the nose centre, as (X radius, Z) in units of R
 // (X+ up, Z+ right): 2 6 1 / 7 0 5 / 3 8 4.
 lathe::Pt tipDirection(int tip) {
-  switch (tip) {
-    case 1:
-      return {1, 1};
-    case 2:
-      return {1, -1};
-    case 3:
-      return {-1, -1};
-    case 4:
-      return {-1, 1};
-    case 5:
-      return {0, 1};
-    case 6:
-      return {1, 0};
-    case 7:
-      return {0, -1};
-    case 8:
-      return {-1, 0};
-    default:
-      return {0, 0};  // 0 and 9: the program describes the nose centre
-  }
+  const lathe::TipSigns t = lathe::tipSigns(tip);
+  return {static_cast<double>(t.x), static_cast<double>(t.z)};
 }
 
 // Intersection of the lines p + t d and q + s e; nullopt when parallel.

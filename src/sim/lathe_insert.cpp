@@ -4,32 +4,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "motion/tip_direction.hpp"
+
 namespace ncvm::lsim {
 
 Pt tipDirection(int tip) {
-  // X up (r), Z right: 1 = (+X,+Z), 2 = (+X,-Z), 3 = (-X,-Z), 4 = (-X,+Z), 5 = +Z, 6 = +X,
-  // 7 = -Z, 8 = -X (docs/fanuc-decisions.md).
-  constexpr double h = std::numbers::sqrt2 / 2;
-  switch (tip) {
-    case 1:
-      return {h, h};
-    case 2:
-      return {h, -h};
-    case 3:
-      return {-h, -h};
-    case 4:
-      return {-h, h};
-    case 5:
-      return {0, 1};
-    case 6:
-      return {1, 0};
-    case 7:
-      return {0, -1};
-    case 8:
-      return {-1, 0};
-    default:
-      return {0, 0};
-  }
+  // The unit vector towards the imaginary tip (motion/tip_direction.hpp; docs/fanuc-decisions.md).
+  const lathe::TipSigns t = lathe::tipSigns(tip);
+  const double n = std::hypot(t.x, t.z);
+  if (n == 0) return {0, 0};
+  return {t.x / n, t.z / n};
 }
 
 namespace {
