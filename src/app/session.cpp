@@ -171,6 +171,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   if (stock) {
     r.stock = stock->finish(stockOut_);
     s["stock"] = r.stock;
+    if (viewerGrid_ > 0) r.viewerStock = stock->viewerStock(viewerGrid_);
   }
   return r;
 }

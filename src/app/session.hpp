@@ -44,7 +44,8 @@ class Session {
     nlohmann::json state;
     std::string printed;  // DPRNT/BPRNT output
     nlohmann::json machineState;
-    nlohmann::json stock;  // the stock model's analysis (null without simulateStock)
+    nlohmann::json stock;        // the stock model's analysis (null without simulateStock)
+    nlohmann::json viewerStock;  // the final stock for the web viewer (keepViewerStock)
     // The cycle-time model's totals and breakdowns (also in state["timing"]); empty when
     // timing is off (setTiming(false)).
     std::shared_ptr<const TimeReport> timing;
@@ -56,6 +57,9 @@ class Session {
     stockOn_ = true;
     stockOut_ = std::move(outDir);
   }
+  // With simulateStock, also returns the final stock in Result::viewerStock
+  // (StockModel::viewerStock: a mill's grid at most maxGrid cells a side).
+  void keepViewerStock(int maxGrid) { viewerGrid_ = maxGrid; }
   // Runs the main program; `sink` receives every event (may be nullptr). With a
   // machine state (memoryToJson format) the control starts from it instead of the setup's
   // offsets and #500-#999; Result::machineState is what it keeps afterwards.
@@ -81,6 +85,7 @@ class Session {
   std::vector<const Program*> ownPrograms_;  // from files named on the command line
   bool stockOn_ = false;
   std::string stockOut_;
+  int viewerGrid_ = 0;  // 0: no Result::viewerStock
   bool timing_ = true;
 };
 

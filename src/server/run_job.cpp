@@ -17,6 +17,9 @@ nlohmann::json capsJson(const RunCaps& caps) {
 
 namespace {
 
+// A mill stock reaches the browser as at most 256 x 256 heights (about 0.6 MB of JSON).
+constexpr int kViewerGrid = 256;
+
 RunCaps capsFrom(const nlohmann::json& j) {
   RunCaps c;
   if (!j.is_object()) return c;
@@ -64,6 +67,13 @@ nlohmann::json runJob(const nlohmann::json& request) {
         if (dir.is_string()) session.addLibrary(dir.get<std::string>());
     session.addBundledMacros();
 
+    // A setup with [stock] gets its stock simulated, as `ncvm run --stock-out` would, but
+    // no files are written: the final stock goes back in the answer.
+    if (session.setup().stock.present) {
+      session.simulateStock("");
+      session.keepViewerStock(kViewerGrid);
+    }
+
     StepRecorder recorder(session.files(), session.setup(), session.setup().limits.maxTraceBytes);
     session.setInspector([&](Executor& e) { recorder.attach(&e); });
     Session::Result r = session.run(&recorder);
@@ -80,8 +90,8 @@ nlohmann::json runJob(const nlohmann::json& request) {
     out["load_warnings"] = session.store().warnings();
     out["machine"] = {{"kind", session.setup().kind == MachineKind::Lathe ? "lathe" : "mill"},
                       {"axes", session.setup().reportedAxes()}};
-    // Hook for the stock simulation (issue 8): when the run produces a stock, it goes into
-    // out["stock"] and the viewer draws it (web/src/stock.js describes the format).
+    // The final stock (web/src/stock.js draws it); its analysis is state["stock"].
+    if (!r.viewerStock.is_null()) out["stock"] = std::move(r.viewerStock);
     return out;
   } catch (const SetupError& e) {
     return failure(std::string("setup error: ") + e.what());

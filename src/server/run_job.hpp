@@ -21,7 +21,8 @@ struct RunCaps {
 //    "libs": [FOLDER...], "caps": {"max_program_bytes", "max_blocks", "max_sim_seconds",
 //    "max_trace_bytes"}}
 // The answer: {"ok": true, "state", "trace" (JSON Lines text), "steps", "check", "printed",
-// "machine": {"kind", "axes"}} or {"ok": false, "error": MESSAGE} for a setup or load error.
+// "machine": {"kind", "axes"}, "stock" (with a [stock] in the setup: the final stock,
+// docs/web-viewer.md)} or {"ok": false, "error": MESSAGE} for a setup or load error.
 nlohmann::json runJob(const nlohmann::json& request);
 
 nlohmann::json capsJson(const RunCaps& caps);

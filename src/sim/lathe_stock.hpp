@@ -23,6 +23,7 @@ class LatheStock final : public StockModel {
   void onMove(const MoveEvent& e) override;
   void onTool(const ToolEvent& e) override;
   nlohmann::json finish(const std::string& outDir) override;
+  nlohmann::json viewerStock(int maxGrid) override;
 
   // The pieces, for tests and benchmarks. Points are (radius, z) of the programmed point.
   void selectTool(const ToolSpec& tool);

@@ -22,6 +22,7 @@ class MillStock final : public StockModel {
   void onMove(const MoveEvent& e) override;
   void onTool(const ToolEvent& e) override;
   nlohmann::json finish(const std::string& outDir) override;
+  nlohmann::json viewerStock(int maxGrid) override;
 
   MillSim& sim() { return *sim_; }
   double cell() const { return cell_; }

@@ -24,6 +24,11 @@ class StockModel : public EventSink {
   // the run.
   virtual nlohmann::json finish(const std::string& outDir) = 0;
 
+  // The final stock for the web viewer (docs/web-viewer.md, `stock`): a lathe's profile
+  // rings, a mill's height field downsampled to at most maxGrid cells a side
+  // (sim/viewer_stock.cpp). Called after finish().
+  virtual nlohmann::json viewerStock(int maxGrid) = 0;
+
   // G31 against the current stock (probe.use_stock), machine coordinates in mm like
   // every ProbeWorld; nullptr when the model cannot be probed.
   virtual const ProbeWorld* probeWorld() const { return nullptr; }

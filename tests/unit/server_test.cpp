@@ -8,14 +8,18 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <thread>
 
+#include "app/session.hpp"
 #include "server/run_job.hpp"
 #include "server/safe_path.hpp"
 #include "server/web_server.hpp"
+#include "sim/heightfield_io.hpp"
 
 namespace fs = std::filesystem;
 using namespace ncvm::server;
@@ -249,7 +253,8 @@ TEST_F(ServerTest, MalformedAndOversizedRequests) {
   r = post(json{{"programme", "O1"}}.dump());
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 400);
-  r = post(json{{"program", "O1\nM30\n"}, {"name", 42}, {"dir", false}}.dump());  // wrong types: ignored
+  r = post(
+      json{{"program", "O1\nM30\n"}, {"name", 42}, {"dir", false}}.dump());  // wrong types: ignored
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
   r = post(json{{"program", 42}}.dump());
@@ -322,4 +327,121 @@ TEST_F(ServerTest, RunawayProgramTimesOut) {
   auto ok = post(json{{"program", "O1\nG00 X1.\nM30\n"}}.dump());
   ASSERT_TRUE(ok);
   EXPECT_EQ(ok->status, 200);
+}
+
+namespace {
+
+// The stock of a run, simulated by the CLI's path (Session with --stock-out) into `dir`.
+void simulateToFiles(const std::string& program, const std::string& setupText,
+                     const fs::path& dir) {
+  ncvm::Session s(ncvm::parseSetup(setupText, "setup.toml"));
+  s.addProgramText(program, "p.nc");
+  s.simulateStock(dir.string());
+  s.run(nullptr);
+}
+
+const char* kLatheSetup =
+    "[machine]\nkind = \"lathe\"\nunits = \"mm\"\n[axes.X]\ninitial = 100.0\n[axes.Z]\ninitial = "
+    "20.0\n"
+    "[tools.1]\ntype = \"insert\"\nnose_radius = 0.4\ntip = 3\n"
+    "[stock]\ndiameter = 50.0\nlength = 60.0\nfront_z = 0.0\n";
+const char* kLatheProgram =
+    "O0001\nG99 T0101\nG00 X52. Z2.\nG01 Z-30. F0.2\nX40.\nZ-30.\nG00 X52.\nZ2.\nX40.\n"
+    "G01 Z-30.\nG00 X100. Z20.\nM30\n";
+
+const char* kMillSetup =
+    "[machine]\nkind = \"mill\"\nunits = \"mm\"\n[axes.Z]\ninitial = 50.0\n"
+    "[tools.1]\ntype = \"flat\"\ndiameter = 10.0\n"
+    "[stock]\nmin = [0.0, 0.0, -20.0]\nmax = [400.0, 100.0, 0.0]\ncell = 0.5\n";
+const char* kMillProgram =
+    "O0002\nT1 M06\nG90 G00 X-10. Y50.\nZ-5.\nG01 X410. F500.\nG00 Z50.\nM30\n";
+
+}  // namespace
+
+TEST(RunJob, LatheStockIsTheSimulatedProfile) {
+  json r = runJob({{"program", kLatheProgram}, {"setup", kLatheSetup}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  ASSERT_TRUE(r.contains("stock"));
+  const json& st = r["stock"];
+  EXPECT_EQ(st["type"], "profile");
+  EXPECT_TRUE(r["state"]["stock"].is_object());  // the analysis for the panels
+
+  // The same run through the CLI's path: profile.csv holds ring,hole,x,z.
+  TempDir dir;
+  simulateToFiles(kLatheProgram, kLatheSetup, dir.path);
+  std::ifstream csv(dir.path / "profile.csv");
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<std::pair<double, double>>> rings;
+  while (std::getline(csv, line)) {
+    size_t ring = 0;
+    int hole = 0;
+    double x = 0, z = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%zu,%d,%lf,%lf", &ring, &hole, &x, &z), 4) << line;
+    if (rings.size() <= ring) rings.resize(ring + 1);
+    rings[ring].push_back({z, x});
+    EXPECT_EQ(st["rings"][ring]["hole"].get<bool>(), hole == 1);
+  }
+  ASSERT_EQ(st["rings"].size(), rings.size());
+  double minX = 1e9, maxX = 0;
+  for (size_t k = 0; k < rings.size(); ++k) {
+    const json& pts = st["rings"][k]["points"];
+    ASSERT_EQ(pts.size(), rings[k].size());
+    for (size_t i = 0; i < pts.size(); ++i) {
+      EXPECT_NEAR(pts[i][0].get<double>(), rings[k][i].first, 1e-4);
+      EXPECT_NEAR(pts[i][1].get<double>(), rings[k][i].second, 1e-4);
+      minX = std::min(minX, pts[i][1].get<double>());
+      maxX = std::max(maxX, pts[i][1].get<double>());
+    }
+  }
+  // The bar of D50 turned to D40 over Z0..-30 (the axis is the profile's other edge).
+  EXPECT_NEAR(maxX, 50.0, 1e-6);
+  EXPECT_NEAR(minX, 0.0, 1e-6);
+  bool turned = false;
+  for (const auto& p : st["rings"][0]["points"])
+    if (std::abs(p[1].get<double>() - 40.0) < 1e-3 && p[0].get<double>() < -10) turned = true;
+  EXPECT_TRUE(turned) << st.dump();
+}
+
+TEST(RunJob, MillStockIsTheHeightFieldDownsampled) {
+  json r = runJob({{"program", kMillProgram}, {"setup", kMillSetup}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  ASSERT_TRUE(r.contains("stock"));
+  const json& st = r["stock"];
+  EXPECT_EQ(st["type"], "grid");
+  // 800 x 200 cells of 0.5 mm shrink by 4 to 200 x 50 cells of 2 mm.
+  ASSERT_EQ(st["nx"].get<int>(), 200);
+  ASSERT_EQ(st["ny"].get<int>(), 50);
+  EXPECT_EQ(st["step"].get<int>(), 4);
+  EXPECT_DOUBLE_EQ(st["cell"].get<double>(), 2.0);
+  ASSERT_EQ(st["z"].size(), 200u * 50u);
+  EXPECT_DOUBLE_EQ(st["bottom"].get<double>(), -20.0);
+
+  // Every grid height is the lowest of its 4 x 4 block of stock.hmap.
+  TempDir dir;
+  simulateToFiles(kMillProgram, kMillSetup, dir.path);
+  ncvm::HeightField f = ncvm::loadHeightMap((dir.path / "stock.hmap").string());
+  ASSERT_EQ(f.nx(), 800);
+  ASSERT_EQ(f.ny(), 200);
+  EXPECT_DOUBLE_EQ(st["x0"].get<double>(), f.x0());
+  EXPECT_DOUBLE_EQ(st["y0"].get<double>(), f.y0());
+  int slot = 0;
+  for (int gj = 0; gj < 50; ++gj)
+    for (int gi = 0; gi < 200; ++gi) {
+      float lo = f.top();
+      for (int j = gj * 4; j < gj * 4 + 4; ++j)
+        for (int i = gi * 4; i < gi * 4 + 4; ++i) lo = std::min(lo, f.at(i, j));
+      double z = st["z"][static_cast<size_t>(gj * 200 + gi)].get<double>();
+      ASSERT_NEAR(z, lo, 1e-4) << gi << "," << gj;
+      if (std::abs(z + 5.0) < 1e-4) ++slot;
+    }
+  // The slot (Y45..55 at Z-5, 10 mm wide) covers 5 or 6 rows of 2 mm along the whole block.
+  EXPECT_GE(slot, 5 * 200);
+  EXPECT_LE(slot, 6 * 200);
+}
+
+TEST(RunJob, NoStockWithoutAStockSection) {
+  json r = runJob({{"program", "O1\nG00 X1.\nM30\n"}});
+  ASSERT_TRUE(r["ok"].get<bool>());
+  EXPECT_FALSE(r.contains("stock"));
 }

@@ -88,13 +88,33 @@ export function renderMessages(el, model, onPick) {
     if (e.type === 'message') items.push({ kind: 'message', line: e.line, file: e.file, text: `${e.source}: ${e.text}`, event: i });
   });
   for (const w of a.load_warnings || []) items.push({ kind: 'warning', text: w });
+  const stock = a.state?.stock;
+  for (const c of stock?.collisions || [])
+    items.push({ kind: 'alarm', line: c.line, file: c.program, text: `stock collision: ${c.kind} (${fmt(c.amount, 3)})` });
   let html = `<ul class="messages">${items.map((it, k) => `<li class="${it.kind}" data-k="${k}">
     <b>${it.kind}</b> ${it.file ? `${escapeHtml(it.file)}:${it.line}${it.col ? ':' + it.col : ''}` : ''} ${escapeHtml(it.text)}</li>`).join('')}</ul>`;
   if (!items.length) html = '<p class="empty">No alarms, warnings or messages.</p>';
+  if (stock) html += stockSummary(stock);
   if (a.printed) html += `<h3>DPRNT output</h3><pre class="printed">${escapeHtml(a.printed)}</pre>`;
   el.innerHTML = html;
   el.querySelectorAll('li').forEach((li) => li.addEventListener('click', () => onPick(items[Number(li.dataset.k)])));
   return items;
+}
+
+// The stock analysis in a few lines (docs/stock-analysis.md has every field).
+function stockSummary(st) {
+  const u = st.units || '';
+  const rows = [['model', `${st.kind}, ${st.cutting_moves ?? '?'} of ${st.moves ?? '?'} moves cut`]];
+  const d = st.deviation;
+  if (d) {
+    rows.push(['deviation max', `${fmt(d.max, 4)} ${u} (excess ${fmt(d.max_excess, 4)}, gouge ${fmt(d.max_gouge, 4)})`]);
+    rows.push(['in tolerance', `${fmt(100 * (d.in_tolerance ?? 0), 1)} % of ±${fmt(d.tolerance, 4)} ${u}`]);
+  } else rows.push(['deviation', 'no [target]']);
+  if (st.uncut) rows.push(['uncut area', `${fmt(st.uncut.area, 2)} ${u}² (${fmt(100 * (st.uncut.share ?? 0), 1)} %)`]);
+  rows.push(['collisions', String((st.collisions || []).length)]);
+  return `<h3>Stock</h3><table id="stock-summary"><tbody>${rows
+    .map(([k, v]) => `<tr><th>${escapeHtml(k)}</th><td>${escapeHtml(v)}</td></tr>`)
+    .join('')}</tbody></table>`;
 }
 
 function bars(entries, total) {

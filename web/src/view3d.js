@@ -98,11 +98,14 @@ export class View3D {
       ]);
       this.group.add(new THREE.Line(axis, new THREE.LineDashedMaterial({ color: 0x99a0aa, dashSize: 3, gapSize: 2 })).computeLineDistances());
     }
-    // Hook for the stock simulation (issue 8): drawn when the run answer has one.
-    if (model.answer.stock) {
-      const stock = drawStock(model.answer.stock, this.lathe);
-      if (stock) this.group.add(stock);
+    // The final stock of the stock simulation, when the run answer has one; data-stock on
+    // the view says which form was drawn (the browser test reads it).
+    const stock = model.answer.stock ? drawStock(model.answer.stock, this.lathe) : null;
+    if (stock) {
+      this.group.add(stock);
+      this.bounds.union(new THREE.Box3().setFromObject(stock)); // Fit frames the part too
     }
+    this.host.dataset.stock = stock ? model.answer.stock.type : 'none';
     this.scene.remove(this.tool);
     // Sized to the part (mm or inch); on a lathe it stands along X, as a turret tool would.
     this.tool = this.makeTool(Math.min(10, size / 40));

@@ -158,3 +158,45 @@ test('a lathe program is shown as a half-section', async () => {
   assert.match(await page.textContent('#p-modal'), /G18/);
   await shot('lathe');
 });
+
+// The stock of the simulation: the examples' setups have a [stock], so the run answer
+// carries the final stock and the view draws it.
+async function stockPixels(file, form) {
+  await openExample(file);
+  await runAndWait();
+  assert.match(await page.textContent('#status'), /ended M30/);
+  assert.equal(await page.getAttribute('#view', 'data-stock'), form);
+  // The stock is drawn in its own pale grey-blue (not the grid's dark grey nor the path's
+  // saturated colours): count the pixels of that hue.
+  return page.evaluate(() => {
+    const gl = document.querySelector('#view canvas');
+    const c = document.createElement('canvas');
+    c.width = gl.width;
+    c.height = gl.height;
+    const ctx = c.getContext('2d');
+    ctx.drawImage(gl, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
+      if (r > 60 && g > r && b > g && b - r >= 12 && b - r <= 80) n++;
+    }
+    return { n, total: d.length / 4 };
+  });
+}
+
+test('a lathe stock is drawn as a half-section with the revolved part', async () => {
+  const px = await stockPixels('convex-arc-turning/arc-tnrc-g42.nc', 'profile');
+  assert.ok(px.n > 5000, `no stock on the canvas (${px.n} stock pixels of ${px.total})`);
+  await tab('p-messages');
+  assert.match(await page.textContent('#stock-summary'), /deviation max/);
+  await shot('stock-lathe');
+});
+
+test('a mill stock is drawn from its height grid', async () => {
+  const px = await stockPixels('face-milling-g42/face-milling-g42.nc', 'grid');
+  assert.ok(px.n > 5000, `no stock on the canvas (${px.n} stock pixels of ${px.total})`);
+  await tab('p-messages');
+  assert.match(await page.textContent('#stock-summary'), /uncut area/);
+  await shot('stock-mill');
+});
