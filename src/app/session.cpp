@@ -114,7 +114,8 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   }
   // The time model sits between the control and the caller's sinks.
   std::unique_ptr<TimingStage> stage;
-  if (timing_) stage = std::make_unique<TimingStage>(setup_, sink ? *sink : none);
+  // Without a sink the stage keeps no events, only what the time report needs.
+  if (timing_) stage = std::make_unique<TimingStage>(setup_, sink);
   Executor exec(setup_, store_, stage ? static_cast<EventSink&>(*stage) : sink ? *sink : none);
   if (machineState) {
     MachineMemory mem = exec.memory();

@@ -79,24 +79,24 @@ double blockTime(double v0, double v1, double vmax, double len, const Ramp& r) {
 }
 
 namespace {
-// Distance after time t of a ramp from v0 up by dv (0 <= t <= rampTime(dv)).
-double rampDistanceAt(double v0, double dv, const Ramp& r, double t) {
-  if (trapezoid(r)) return v0 * t + 0.5 * r.a * t * t;
-  bool full = dv >= r.a * r.a / r.j;
-  double t1 = full ? r.a / r.j : std::sqrt(dv / r.j), am = r.j * t1,
-         t2 = full ? dv / r.a - r.a / r.j : 0.0;
-  if (t <= t1) return v0 * t + r.j * t * t * t / 6.0;
-  double va = v0 + 0.5 * r.j * t1 * t1, da = v0 * t1 + r.j * t1 * t1 * t1 / 6.0;
-  if (t <= t1 + t2) {
-    double tau = t - t1;
-    return da + va * tau + 0.5 * am * tau * tau;
+// The root of f(t) = s on [0, hi] for f increasing and convex there (true of each cubic phase
+// of a jerk-limited ramp): Newton's steps from the right end fall monotonically onto the root.
+template <class F, class D>
+double convexRoot(F f, D df, double s, double hi) {
+  double t = hi;
+  for (int k = 0; k < 40; ++k) {
+    double slope = df(t);
+    if (!(slope > 0)) break;
+    double step = (f(t) - s) / slope;
+    if (!(step > 1e-15 * hi)) break;
+    t = std::max(0.0, t - step);
   }
-  double vb = va + am * t2, db = da + va * t2 + 0.5 * am * t2 * t2;
-  double tau = std::min(t - t1 - t2, t1);
-  return db + vb * tau + 0.5 * am * tau * tau - r.j * tau * tau * tau / 6.0;
+  return t;
 }
 
-// Time at which a ramp from v0 up by dv has covered distance s.
+// Time at which a ramp from v0 up by dv has covered distance s: each phase in closed form
+// (the constant-acceleration middle) or by Newton's method (the two cubic ends), not by
+// bisection; this runs once for every block that ends inside a ramp.
 double rampTimeAt(double v0, double dv, const Ramp& r, double s) {
   double total = rampTime(dv, r);
   if (s <= 0 || total <= 0) return 0;
@@ -104,12 +104,26 @@ double rampTimeAt(double v0, double dv, const Ramp& r, double s) {
     double disc = v0 * v0 + 2.0 * r.a * s;
     return (std::sqrt(disc) - v0) / r.a;
   }
-  double lo = 0, hi = total;
-  for (int k = 0; k < 60 && hi - lo > 1e-13; ++k) {
-    double mid = 0.5 * (lo + hi);
-    (rampDistanceAt(v0, dv, r, mid) < s ? lo : hi) = mid;
+  bool full = dv >= r.a * r.a / r.j;
+  double j = r.j, t1 = full ? r.a / r.j : std::sqrt(dv / r.j), am = j * t1,
+         t2 = full ? dv / r.a - r.a / r.j : 0.0;
+  double da = v0 * t1 + j * t1 * t1 * t1 / 6.0;
+  if (s <= da)
+    return convexRoot([&](double t) { return v0 * t + j * t * t * t / 6.0; },
+                      [&](double t) { return v0 + 0.5 * j * t * t; }, s, t1);
+  double va = v0 + 0.5 * j * t1 * t1;
+  double db = da + va * t2 + 0.5 * am * t2 * t2;
+  if (s <= db) {
+    double tau = (std::sqrt(std::max(0.0, va * va + 2.0 * am * (s - da))) - va) / am;
+    return t1 + std::clamp(tau, 0.0, t2);
   }
-  return 0.5 * (lo + hi);
+  double vb = va + am * t2;
+  double dEnd = db + vb * t1 + 0.5 * am * t1 * t1 - j * t1 * t1 * t1 / 6.0;
+  if (s >= dEnd) return total;
+  double tau =
+      convexRoot([&](double u) { return db + vb * u + 0.5 * am * u * u - j * u * u * u / 6.0; },
+                 [&](double u) { return vb + am * u - 0.5 * j * u * u; }, s, t1);
+  return t1 + t2 + tau;
 }
 }  // namespace
 

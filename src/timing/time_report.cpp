@@ -28,26 +28,42 @@ void TimeReport::toolSelected(int tool, const EventOrigin& at) {
   ops_.push_back(OperationTime{tool, at, {}, 0, 0, {}});
 }
 
+// Out of the per-move path: the table grows by doubling, so this runs a few times per file.
+void TimeReport::growLines(const EventOrigin& at) {
+  if (at.file >= lines_.size()) lines_.resize(at.file + 1);
+  auto& file = lines_[at.file];
+  if (at.line >= file.size()) file.resize(std::max<size_t>(at.line + 1, file.size() * 2));
+}
+
+TimePair& TimeReport::lineSlot(const EventOrigin& at) {
+  if (at.file >= lines_.size() || at.line >= lines_[at.file].size()) [[unlikely]]
+    growLines(at);
+  LineSlot& l = lines_[at.file][at.line];
+  if (l.count == 0) l.programName = at.programName, l.n = at.n;
+  ++l.count;
+  return l.time;
+}
+
 void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double simple) {
   total_.add(model, simple);
   byKind_[static_cast<size_t>(kind)].add(model, simple);
   OperationTime& o = op();
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
-  if (at.file >= lines_.size()) lines_.resize(at.file + 1);
-  auto& file = lines_[at.file];
-  if (at.line >= file.size()) file.resize(std::max<size_t>(at.line + 1, file.size() * 2));
-  LineSlot& l = file[at.line];
-  if (l.count == 0) l.programName = at.programName, l.n = at.n;
-  ++l.count;
-  l.time.add(model, simple);
+  lineSlot(at).add(model, simple);
 }
 
-void TimeReport::addMove(const MoveEvent& e, double model, double simple) {
-  add(e.mode == MoveMode::Rapid ? TimeKind::Rapid : TimeKind::Cutting, e.at, model, simple);
+void TimeReport::addMoveTime(MoveMode mode, const EventOrigin& at, double length, double model,
+                             double simple) {
+  bool rapid = mode == MoveMode::Rapid;
+  TimeKind kind = rapid ? TimeKind::Rapid : TimeKind::Cutting;
+  total_.add(model, simple);
+  byKind_[static_cast<size_t>(kind)].add(model, simple);
   OperationTime& o = op();
-  (e.mode == MoveMode::Rapid ? o.rapidLength : o.feedLength) += e.length;
-  trackDrilling(e);
+  o.time.add(model, simple);
+  o.byKind[static_cast<size_t>(kind)].add(model, simple);
+  (rapid ? o.rapidLength : o.feedLength) += length;
+  lineSlot(at).add(model, simple);
 }
 
 void TimeReport::trackDrilling(const MoveEvent& e) {
@@ -108,6 +124,8 @@ std::vector<LineTime> TimeReport::topLines(size_t n) const {
     for (size_t ln = 0; ln < lines_[f].size(); ++ln) {
       const LineSlot& l = lines_[f][ln];
       if (!l.count) continue;
+      // Most lines lose to the n-th best on time alone: no record built for them.
+      if (best.size() == n && n > 0 && l.time.model < best.back().time.model) continue;
       LineTime t{
           EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), l.n, l.programName},
           l.count, l.time};

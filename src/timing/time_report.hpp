@@ -49,7 +49,16 @@ struct DrillStats {
 
 class TimeReport {
  public:
-  void addMove(const MoveEvent& e, double model, double simple);
+  void addMove(const MoveEvent& e, double model, double simple) {
+    addMoveTime(e.mode, e.at, e.length, model, simple);
+    trackDrilling(e);
+  }
+  // addMove in two halves, for the look-ahead that holds compact records rather than events:
+  // the drilling count when the move arrives (it depends only on the order of the moves),
+  // the time when it is planned.
+  void addMoveTime(MoveMode mode, const EventOrigin& at, double length, double model,
+                   double simple);
+  void trackDrilling(const MoveEvent& e);
   void add(TimeKind kind, const EventOrigin& at, double model, double simple);
   void toolSelected(int tool, const EventOrigin& at);
 
@@ -64,7 +73,8 @@ class TimeReport {
 
  private:
   OperationTime& op();
-  void trackDrilling(const MoveEvent& e);
+  TimePair& lineSlot(const EventOrigin& at);
+  void growLines(const EventOrigin& at);
 
   TimePair total_;
   std::array<TimePair, kTimeKinds> byKind_{};

@@ -9,6 +9,7 @@ namespace ncvm {
 
 using timing::blockTime;
 using timing::Ramp;
+using timing::rampDistance;
 using timing::reachable;
 
 namespace {
@@ -25,7 +26,7 @@ PlaneAxes planeAxes(int plane) {
 }
 }  // namespace
 
-TimingStage::TimingStage(const Setup& setup, EventSink& next)
+TimingStage::TimingStage(const Setup& setup, EventSink* next)
     : setup_(setup), t_(setup.timing), next_(next) {
   for (size_t k = 0; k < kMaxAxes; ++k) {
     const AxisConfig& a = setup.axes[k];
@@ -37,7 +38,11 @@ TimingStage::TimingStage(const Setup& setup, EventSink& next)
     cornerDiff_[k] = t_.cornerSpeedDiff[k] / 60.0;
   }
   tMin_ = t_.minBlockTimeMs / 1000.0;
-  if (t_.dynamic) held_.reserve(4 * static_cast<size_t>(std::max(1, t_.lookaheadBlocks)) + 256);
+  if (t_.dynamic) {
+    size_t cap = 4 * static_cast<size_t>(std::max(1, t_.lookaheadBlocks)) + 256;
+    held_.reserve(cap);
+    if (next_) events_.reserve(cap);
+  }
 }
 
 // ---- spindle ---------------------------------------------------------------------------
@@ -245,7 +250,7 @@ void TimingStage::buildRuns(size_t look) {
         double window = lengths_[lastSeen] - lengths_[i + 1];
         if (window <= 0)
           r.exitCap = 0;
-        else
+        else if (rampDistance(0, r.vmax, s.ramp) > window)  // else it stops in time at vmax
           r.vmax = std::min(r.vmax, reachable(0, window, s.ramp));
       }
     }
@@ -288,8 +293,16 @@ void TimingStage::plan(bool toStop) {
   }
   for (size_t i = 0; i < commitRuns; ++i) commit(runs_[i]);
   entry_ = toStop ? 0.0 : runs_[commitRuns - 1].vExit;
-  held_.erase(held_.begin(),
-              held_.begin() + static_cast<std::ptrdiff_t>(runs_[commitRuns - 1].last + 1));
+  size_t done = runs_[commitRuns - 1].last + 1;
+  auto doneDiff = static_cast<std::ptrdiff_t>(done);
+  held_.erase(held_.begin(), held_.begin() + doneDiff);
+  if (next_) {
+    events_.erase(events_.begin(), events_.begin() + doneDiff);
+    size_t sent = 0;
+    while (sent < after_.size() && after_[sent].seq < heldBase_ + done) ++sent;
+    after_.erase(after_.begin(), after_.begin() + static_cast<std::ptrdiff_t>(sent));
+  }
+  heldBase_ += done;
   if (toStop) haveDir_ = false;
 }
 
@@ -297,17 +310,23 @@ void TimingStage::commit(const Run& run) {
   timing::Profile prof = timing::makeProfile(
       run.vEntry, run.vExit, std::isinf(run.vmax) ? 0.0 : run.vmax, run.length, run.ramp);
   double s = 0, before = 0;
+  // The G96 events to send after the moves of this run (sorted by their move).
+  size_t sp = 0;
+  while (next_ && sp < after_.size() && after_[sp].seq < heldBase_ + run.first) ++sp;
   for (size_t i = run.first; i <= run.last; ++i) {
-    Held& h = held_[i];
+    const Held& h = held_[i];
     s += h.s.length;
     double at = i == run.last ? prof.total() : prof.timeAt(s);
     double time = std::max(at - before, tMin_);
     before = at;
     if (i == run.last && run.stopAfter) time += t_.inPositionS;
-    h.e.time = time;
-    report_.addMove(h.e, time, h.e.timeSimple);
-    next_.onMove(h.e);
-    for (const auto& sp : h.after) next_.onSpindle(sp);
+    report_.addMoveTime(h.mode, h.at, h.length, time, h.timeSimple);
+    if (!next_) continue;
+    MoveEvent& e = events_[i];
+    e.time = time;
+    next_->onMove(e);
+    for (; sp < after_.size() && after_[sp].seq == heldBase_ + i; ++sp)
+      next_->onSpindle(after_[sp].e);
   }
 }
 
@@ -317,7 +336,7 @@ void TimingStage::onMove(const MoveEvent& in) {
   if (!t_.dynamic) {
     // The simple model: time is length / feed already (timeSimple -1 means the same).
     report_.addMove(in, in.time, in.time);
-    next_.onMove(in);
+    forwardMove(in);
     return;
   }
   if (in.mode == MoveMode::Rapid || in.thread) {
@@ -330,14 +349,18 @@ void TimingStage::onMove(const MoveEvent& in) {
     if (in.surfaceSpeed > 0 && (dir_ == SpindleDir::Cw || dir_ == SpindleDir::Ccw))
       followSpindle(cssTarget(in.end[0], in), e.time);
     report_.addMove(e, e.time, e.timeSimple);
-    next_.onMove(e);
+    forwardMove(e);
     return;
   }
-  held_.push_back(Held{in, {}, {}});
+  report_.trackDrilling(in);
+  if (next_) {
+    events_.push_back(in);
+    events_.back().timeSimple = in.time;
+  }
+  held_.push_back(Held{{}, in.at, in.length, in.time, in.mode});
   Held& h = held_.back();
-  h.e.timeSimple = in.time;
   AxisArray dirIn{}, dirOut{};
-  h.s = segmentFor(h.e, dirIn, dirOut);
+  h.s = segmentFor(in, dirIn, dirOut);
   if (h.s.length > 0) {
     if (!haveDir_) {
       h.s.vJunction = held_.size() == 1 && entry_ == 0 ? 0.0 : kInf;
@@ -373,17 +396,17 @@ void TimingStage::onDwell(const DwellEvent& e) {
   double t = e.time;
   if (t_.dynamic && e.revolutions > 0 && rpm_ > 0) t = e.revolutions * 60.0 / rpm_;
   report_.add(TimeKind::Dwell, e.at, t, e.time);
-  next_.onDwell(e);
+  if (next_) next_->onDwell(e);
 }
 
 void TimingStage::onMessage(const MessageEvent& e) {
   stop();
-  next_.onMessage(e);
+  if (next_) next_->onMessage(e);
 }
 
 void TimingStage::onAlarm(const AlarmEvent& e) {
   stop();
-  next_.onAlarm(e);
+  if (next_) next_->onAlarm(e);
 }
 
 void TimingStage::onTool(const ToolEvent& e) {
@@ -392,16 +415,17 @@ void TimingStage::onTool(const ToolEvent& e) {
   if (change) report_.toolSelected(e.tool, e.at);
   double t = e.change ? t_.toolChangeS : t_.tCodeS;
   report_.add(TimeKind::Auxiliary, e.at, t_.dynamic ? t : 0.0, 0.0);
-  next_.onTool(e);
+  if (next_) next_->onTool(e);
 }
 
 void TimingStage::onSpindle(const SpindleEvent& e) {
   if (e.follows && t_.dynamic) {
     // G96 following: the model computes the rpm itself; keep the event's place in order.
+    if (!next_) return;
     if (!held_.empty())
-      held_.back().after.push_back(e);
+      after_.push_back(After{heldBase_ + held_.size() - 1, e});
     else
-      next_.onSpindle(e);
+      next_->onSpindle(e);
     return;
   }
   stop();
@@ -417,29 +441,29 @@ void TimingStage::onSpindle(const SpindleEvent& e) {
   rpm_ = (e.dir == SpindleDir::Cw || e.dir == SpindleDir::Ccw) ? e.rpm : 0.0;
   dir_ = e.dir;
   report_.add(TimeKind::Auxiliary, e.at, t, 0.0);
-  next_.onSpindle(e);
+  if (next_) next_->onSpindle(e);
 }
 
 void TimingStage::onCoolant(const CoolantEvent& e) {
   stop();
   report_.add(TimeKind::Auxiliary, e.at, t_.dynamic ? t_.coolantS : 0.0, 0.0);
-  next_.onCoolant(e);
+  if (next_) next_->onCoolant(e);
 }
 
 void TimingStage::onAux(const AuxEvent& e) {
   stop();
   report_.add(TimeKind::Auxiliary, e.at, t_.dynamic ? t_.mCodeS : 0.0, 0.0);
-  next_.onAux(e);
+  if (next_) next_->onAux(e);
 }
 
 void TimingStage::onOffset(const OffsetEvent& e) {
   stop();
-  next_.onOffset(e);
+  if (next_) next_->onOffset(e);
 }
 
 void TimingStage::onSkip(const SkipEvent& e) {
   stop();
-  next_.onSkip(e);
+  if (next_) next_->onSkip(e);
 }
 
 }  // namespace ncvm

@@ -23,7 +23,10 @@ namespace ncvm {
 
 class TimingStage final : public EventSink {
  public:
-  TimingStage(const Setup& setup, EventSink& next);
+  TimingStage(const Setup& setup, EventSink& next) : TimingStage(setup, &next) {}
+  // next nullptr: nothing listens after the stage (only the report is wanted), so the
+  // look-ahead keeps compact records and no copy of the events.
+  TimingStage(const Setup& setup, EventSink* next);
   // Plans and forwards the moves still held (the program ended or stopped).
   void finish();
   const TimeReport& report() const { return report_; }
@@ -53,10 +56,19 @@ class TimingStage final : public EventSink {
   };
 
  private:
+  // A held cutting move: what the planner and the report need, about 200 bytes (the event
+  // itself, about 650, is kept in events_ only when a sink follows).
   struct Held {
-    MoveEvent e;
     Segment s;
-    std::vector<SpindleEvent> after;  // G96 rpm events the control sent after the move
+    EventOrigin at;
+    double length = 0;      // program units, for the report
+    double timeSimple = 0;  // length / feed
+    MoveMode mode = MoveMode::Linear;
+  };
+  // A G96 rpm event the control sent after the held move number seq (heldBase_ counts).
+  struct After {
+    size_t seq = 0;
+    SpindleEvent e;
   };
   // A stretch of held blocks planned as one profile: the joints inside it do not limit the
   // speed, so the acceleration carries on across them (as it does on the control).
@@ -73,6 +85,9 @@ class TimingStage final : public EventSink {
   void buildRuns(size_t look);
   void commit(const Run& run);
   Segment segmentFor(const MoveEvent& e, AxisArray& dirIn, AxisArray& dirOut);
+  void forwardMove(const MoveEvent& e) {
+    if (next_) next_->onMove(e);
+  }
   double rapidTime(const MoveEvent& e) const;
   double spindleFeed(const MoveEvent& e, double lengthMm);
   double cssTarget(double x, const MoveEvent& e) const;
@@ -80,10 +95,13 @@ class TimingStage final : public EventSink {
 
   const Setup& setup_;
   TimingSetup t_;
-  EventSink& next_;
+  EventSink* next_;
   TimeReport report_;
-  std::vector<Held> held_;  // a vector reused as a queue: no allocation per move
-  double entry_ = 0;  // velocity at the start of held_.front()
+  std::vector<Held> held_;         // a vector reused as a queue: no allocation per move
+  std::vector<MoveEvent> events_;  // held_'s events, in step with it, when next_ is set
+  std::vector<After> after_;
+  size_t heldBase_ = 0;  // sequence number of held_.front()
+  double entry_ = 0;     // velocity at the start of held_.front()
   AxisArray lastDir_{};
   bool haveDir_ = false;
   // Axis data, mm (deg for rotary axes).

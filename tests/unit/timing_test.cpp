@@ -106,6 +106,24 @@ TEST(TimingStage, CollinearChainRunsAsOneMove) {
   EXPECT_NEAR(total(run(chain(50, 0.1), deep)), blockTime(0, 0, 100, 5, Ramp{1000, 20000}), 1e-9);
 }
 
+TEST(Profile, TimeAtInsideEachPhaseOfAnSCurveRamp) {
+  // From rest to 100 mm/s with a = 1000, j = 20000: jerk phase 0.05 s (0.4167 mm), constant
+  // acceleration 0.05 s, jerk phase 0.05 s; 7.5 mm in all, then a long cruise.
+  Ramp r{1000, 20000};
+  Profile p = makeProfile(0, 0, 100, 50, r);
+  ASSERT_NEAR(p.dUp, 7.5, 1e-12);
+  // First phase: s = j t^3 / 6.
+  EXPECT_NEAR(p.timeAt(0.2), std::cbrt(6 * 0.2 / 20000), 1e-12);
+  // Middle: after 0.05 s at 25 mm/s and 0.4167 mm, s = da + 25 tau + 500 tau^2.
+  double da = 20000 * 0.05 * 0.05 * 0.05 / 6, tau = 0.02;
+  EXPECT_NEAR(p.timeAt(da + 25 * tau + 500 * tau * tau), 0.05 + tau, 1e-12);
+  // Last phase, by the ramp's symmetry: 0.01 s before its end it is vp t - j t^3 / 6 short.
+  double t = 0.01;
+  EXPECT_NEAR(p.timeAt(7.5 - (100 * t - 20000 * t * t * t / 6)), 0.15 - t, 1e-12);
+  // Cruise: 100 mm/s after the ramp.
+  EXPECT_NEAR(p.timeAt(10), 0.15 + 2.5 / 100, 1e-12);
+}
+
 TEST(Profile, TimeAtSplitsTheProfile) {
   for (Ramp r : {Ramp{1000, 0}, Ramp{1000, 20000}}) {
     Profile p = makeProfile(0, 10, 100, 50, r);
