@@ -193,6 +193,8 @@ nlohmann::json Session::check() const {
       bool macroCall = false, latheCycle = false;
       for (uint32_t k = 0; k < b.nWords; ++k) {
         if (w[k].letter != 'G' || w[k].kind != WordKind::Literal) continue;
+        // A G word far out of range (G314445000) is the run's alarm, not a cast to overflow here.
+        if (!(w[k].value >= 0 && w[k].value < 1000)) continue;
         int g = static_cast<int>(w[k].value * 10 + 0.5);
         macroCall |= g == 650 || g == 660;
         // Lathe multiple repetitive cycles take P/Q sequence numbers, R pass counts and
