@@ -104,6 +104,13 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
       else if (code != 400 && code != 410 && code != 420 && code != 40)
         throw AlarmError(AlarmId::CycleUnavailableCommand, fmt::format("G{} between P and Q", code / 10));
     }
+    // A subprogram call or return cannot be part of the shape: the control reads ns..nf as
+    // one stretch of the current program (0i-F/30i: PS0066).
+    for (int m = 0; m < w.nm; ++m) {
+      int32_t code = w.m[static_cast<size_t>(m)];
+      if (code == 98 || code == 99)
+        throw AlarmError(AlarmId::CycleUnavailableCommand, fmt::format("M{} between P and Q", code));
+    }
     if (k == first) {
       if (motion != 0 && motion != 10) throw AlarmError(AlarmId::ShapeFirstBlockNotG00G01);
       c.nsNamesZ = w.has('Z') || w.has('W');
