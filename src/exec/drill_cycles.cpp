@@ -81,10 +81,22 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
   for (size_t k = 0; k < kMaxAxes; ++k) step[k] = planeTarget[k] - here[k];
 
   const std::array<int64_t, kMaxAxes> first = here;
+  // G16 with G91: each repeat turns by the angle again (a bolt circle), not a straight pitch.
+  const bool polarRepeat = !lathe_ && modal_.g[17] == 160 && modal_.incremental;
+  std::array<int64_t, kMaxAxes> previous = here;
   for (int n = 0; n < repeats; ++n) {
     std::array<int64_t, kMaxAxes> hole = first;
-    for (size_t k = 0; k < kMaxAxes; ++k)
-      if (k != A) hole[k] = modal_.incremental ? first[k] + step[k] * (n + 1) : planeTarget[k];
+    if (polarRepeat) {
+      uint32_t m = 0;
+      std::array<int64_t, kMaxAxes> t{};
+      axisTargets(planeWords, t, m, &previous);
+      for (size_t k = 0; k < kMaxAxes; ++k)
+        if (k != A) hole[k] = t[k];
+      previous = hole;
+    } else {
+      for (size_t k = 0; k < kMaxAxes; ++k)
+        if (k != A) hole[k] = modal_.incremental ? first[k] + step[k] * (n + 1) : planeTarget[k];
+    }
     if (!xf_.active()) {
       drillOneHole(hole, code, axis, cycle_.initial, cycle_.r, cycle_.bottom);
       continue;

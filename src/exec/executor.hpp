@@ -233,6 +233,8 @@ class Executor {
   // current work position).
   bool axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask,
                    const std::array<int64_t, kMaxAxes>* base = nullptr);
+  void polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask,
+                    const std::array<int64_t, kMaxAxes>* base);
   void moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t axesMask);
   void arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw);
   void arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu, double cv, bool cw);

@@ -31,7 +31,7 @@ const std::vector<GCodeInfo>& gcodeTable() {
       {121, ALL, 21, N, "polar coordinate interpolation"},
       {131, ALL, 21, S, "polar coordinate interpolation cancel"},
       {150, M, 17, S, "polar coordinate command cancel"},
-      {160, M, 17, N, "polar coordinate command"},
+      {160, M, 17, S, "polar coordinate command (first plane axis = radius, second = angle)"},
       {170, M, 2, S, "XY plane"},
       {180, M, 2, S, "ZX plane"},
       {190, M, 2, S, "YZ plane"},

@@ -9,6 +9,7 @@
 
 #include "exec/executor.hpp"
 #include "exec/words.hpp"
+#include "motion/transform.hpp"
 
 namespace ncvm {
 
@@ -85,6 +86,7 @@ bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target
       mask |= 1u << k;
     }
   }
+  if (!lathe_ && modal_.g[17] == 160) polarTargets(w, target, mask, base);
   if (!lathe_) {
     for (char c : {'U', 'V', 'W'}) {
       if (w.has(c)) {
@@ -95,6 +97,39 @@ bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target
     }
   }
   return mask != 0;
+}
+
+// G16 polar coordinate command (mill): in the selected plane the first axis word is a radius
+// and the second an angle in degrees, counter-clockwise from the first axis. The centre is
+// the work (or G52 local) zero, or the current position when the radius is incremental (G91);
+// an omitted radius is the current distance from the zero, an omitted angle the current
+// angle; a G91 angle adds to the current angle. Runs after the Cartesian pass, whose values
+// for the two plane axes it replaces.
+void Executor::polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& mask,
+                            const std::array<int64_t, kMaxAxes>* base) {
+  static constexpr char kLetter[3] = {'X', 'Y', 'Z'};
+  const xform::PlaneAxes pa = xform::planeAxes(modal_.plane);
+  const char radiusL = kLetter[pa.u], angleL = kLetter[pa.v];
+  const bool hasRadius = w.has(radiusL), hasAngle = w.has(angleL);
+  if (!hasRadius && !hasAngle) return;
+  const double cu = static_cast<double>(base ? (*base)[pa.u] : machine_[pa.u] - offset_[pa.u]);
+  const double cv = static_cast<double>(base ? (*base)[pa.v] : machine_[pa.v] - offset_[pa.v]);
+  const double nowAngle = (cu == 0 && cv == 0) ? 0.0 : std::atan2(cv, cu);
+  const bool fromHere = hasRadius && modal_.incremental;
+  const double radius = hasRadius ? static_cast<double>(lengthNm(w.value(radiusL), w.hasPoint(radiusL), static_cast<int>(pa.u)))
+                                  : std::hypot(cu, cv);
+  double angle = nowAngle;
+  if (hasAngle) {
+    // Degrees; without a decimal point in the metric least increment (0.001 deg for IS-B),
+    // whatever G20/G21 says: an angle is not a length (docs/fanuc-decisions.md).
+    double deg = w.hasPoint(angleL) ? w.value(angleL) : w.value(angleL) * leastIncrement(setup_.increment, InputUnit::Mm);
+    double rad = deg * std::numbers::pi / 180.0;
+    angle = modal_.incremental ? nowAngle + rad : rad;
+  }
+  const double ou = fromHere ? cu : 0.0, ov = fromHere ? cv : 0.0;
+  target[pa.u] = static_cast<int64_t>(std::llround(ou + radius * std::cos(angle)));
+  target[pa.v] = static_cast<int64_t>(std::llround(ov + radius * std::sin(angle)));
+  mask |= (1u << pa.u) | (1u << pa.v);
 }
 
 double Executor::effectiveFeed() {
