@@ -66,6 +66,8 @@ const std::vector<AlarmInfo>& alarmTable() {
        "The ns block of G70-G73 is not G00 or G01."},
       {AlarmId::CycleUnavailableCommand, "UNAVAILABLE COMMAND IS IN G71-G76",
        "A command the shape program may not contain (M98, G codes of other groups, ...)."},
+      {AlarmId::ReferenceCheckError, "ZERO RETURN CHECK (G27) ERROR",
+       "G27: an axis did not reach its reference position at the commanded point."},
       {AlarmId::CycleNotInMemory, "G70-G73 NOT IN MEMORY",
        "G70-G73 run from MDI or DNC, where the shape blocks cannot be read back."},
       {AlarmId::ShapeLastBlockIllegal, "LAST BLOCK OF SHAPE PROGRAM IS AN ILLEGAL COMMAND",

@@ -53,6 +53,7 @@ enum class AlarmId : uint16_t {
   CycleNotInMemory = 67,
   ShapeLastBlockIllegal = 69,
   ProgramNumberOutOfRange = 74,
+  ReferenceCheckError = 92,
   ProgramNotFound = 76,
   TooManySubNesting = 77,
   SequenceNotFound = 78,

@@ -244,6 +244,7 @@ class Executor {
   double effectiveFeed();
   void dwell(const Words& w);
   void referenceReturn(const Words& w, int which);
+  void referencePositionCheck(const Words& w);
   void returnFromReference(const Words& w);
   void machinePositioning(const Words& w);
   void advanceTime(double seconds);

@@ -45,7 +45,7 @@ const std::vector<GCodeInfo>& gcodeTable() {
       {220, ALL, 4, A, "stored stroke check on"},
       {230, ALL, 4, S, "stored stroke check off"},
       {240, TC, 1, S, "end-face cutting cycle (system C)"},
-      {270, ALL, 0, N, "reference position return check"},
+      {270, ALL, 0, S, "reference position return check"},
       {280, ALL, 0, S, "return to reference position via the intermediate point"},
       {290, ALL, 0, S, "return from reference position"},
       {300, ALL, 0, S, "return to 2nd/3rd/4th reference position"},

@@ -430,6 +430,27 @@ void Executor::referenceReturn(const Words& w, int which) {
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
 }
 
+// G27: rapid to the commanded point (with the active offsets), then every commanded axis
+// must be at its first reference position; an axis that is not gives PS0092. Programs
+// cancel the offsets first, as the manuals advise, or the check fails by the offset.
+void Executor::referencePositionCheck(const Words& w) {
+  if (modal_.g[9] != 800) throw AlarmError(AlarmId::G27to30InCycle);
+  std::array<int64_t, kMaxAxes> target{};
+  uint32_t mask = 0;
+  if (!axisTargets(w, target, mask)) return;
+  moveTo(target, MoveMode::Rapid, mask);
+  for (size_t k = 0; k < kMaxAxes; ++k) {
+    if (!(mask & (1u << k))) continue;
+    const AxisConfig& a = setup_.axes[k];
+    int64_t nm = roundToIncrements(a.reference[0], incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
+    if (a.diameter) nm /= 2;
+    if (machine_[k] != nm)
+      throw AlarmError(AlarmId::ReferenceCheckError,
+                       fmt::format("{} is at {:.4f}, its reference position is {:.4f} (machine, mm)", "XYZABC"[k],
+                                   static_cast<double>(machine_[k]) / 1e6 * (a.diameter ? 2 : 1), a.reference[0]));
+  }
+}
+
 void Executor::returnFromReference(const Words& w) {
   if (modal_.g[9] != 800) throw AlarmError(AlarmId::G27to30InCycle);
   std::array<int64_t, kMaxAxes> target{};

@@ -379,6 +379,10 @@ void Executor::execNc(const Block& b) {
       referenceReturn(w, oneShot == 280 ? 1 : (w.has('P') ? integerWord(w, 'P') : 2));
       moved = true;
       break;
+    case 270:
+      referencePositionCheck(w);
+      moved = true;
+      break;
     case 290:
       returnFromReference(w);
       moved = true;
