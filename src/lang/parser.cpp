@@ -569,7 +569,11 @@ void Compiler::parseCommaWord() {
   } else {
     bool hasPoint = false;
     int intDigits = 0;
+    size_t numStart = i_;
+    char first = peek();
     w.value = parseNumberText(hasPoint, intDigits);
+    if (i_ == numStart || (i_ == numStart + 1 && (first == '-' || first == '+')))
+      fail(AlarmId::NoDataAfterAddress, letter == 'c' ? ",C" : ",R", at);
     if (hasPoint) w.flags |= kHasPoint;
   }
   prog_->words.push_back(w);
