@@ -109,8 +109,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   std::unique_ptr<StockModel> stock =
       stockOn_ || setup_.probe.useStock ? makeStockModel(setup_) : nullptr;
   if (setup_.probe.useStock && !stock->probeWorld())
-    throw SetupError("probe.use_stock: the lathe stock cannot be probed yet (docs/setup-format.md)",
-                     "probe.use_stock");
+    throw SetupError("probe.use_stock: this stock model cannot be probed", "probe.use_stock");
   // The time model sits between the control and the caller's sinks.
   std::unique_ptr<TimingStage> stage;
   // Without a sink the stage keeps no events, only what the time report needs.

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "app/session.hpp"
+#include "sim/lathe_probe.hpp"
 
 using namespace ncvm;
 
@@ -145,13 +146,11 @@ Session::Result runWith(const std::string& setupText, const std::string& program
 }
 }  // namespace
 
-TEST(ProbeUseStock, LatheAndMissingStockAreSetupErrors) {
+TEST(ProbeUseStock, MissingStockIsASetupError) {
   const std::string prog = "O1\nG31 X10. F100.\nM30\n";
   EXPECT_THROW(runWith("[machine]\nkind = \"mill\"\n[probe]\nuse_stock = true\n", prog),
                SetupError);
-  EXPECT_THROW(runWith("[machine]\nkind = \"lathe\"\n[stock]\ndiameter = 50.0\nlength = 80.0\n"
-                       "[probe]\nuse_stock = true\n",
-                       prog),
+  EXPECT_THROW(runWith("[machine]\nkind = \"lathe\"\n[probe]\nuse_stock = true\n", prog),
                SetupError);
 }
 
@@ -172,4 +171,34 @@ TEST(ProbeUseStock, SolidsAndStockFirstContactWins) {
   EXPECT_NEAR(near.state["vars"]["#100"].get<double>(), 4.0, 1e-9);
   // The stock analysis is there although simulateStock was not asked for.
   EXPECT_EQ(near.state["stock"]["kind"], "mill");
+}
+
+// ---- the lathe half-profile -------------------------------------------------------------
+
+TEST(ProfileProbe, BarFaceAndDiameter) {
+  // A bar of radius 25 from Z0 back to Z-80 with a step to radius 20 over Z0..Z-30, as the
+  // lathe stock keeps it (X = z, Y = radius, 1e6 units per mm).
+  const double k = 1e6;
+  auto pt = [&](double z, double r) {
+    return ClipperLib::IntPoint(static_cast<ClipperLib::cInt>(z * k),
+                                static_cast<ClipperLib::cInt>(r * k));
+  };
+  ClipperLib::Paths paths{{pt(0, 0), pt(0, 20), pt(-30, 20), pt(-30, 25), pt(-80, 25), pt(-80, 0)}};
+  ProfileProbe p(paths, k);
+  EXPECT_NEAR(p.distance(10, 5), 5, 1e-12);
+  EXPECT_NEAR(p.distance(10, -5), -5, 1e-12);
+  // Radially in at Z-10: the ball (r 1) touches the Ø40 step at radius 21.
+  auto t = p.firstContact({40, 0, -10}, {0, 0, -10}, 1);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(40 - 40 * *t, 21, 1e-6);
+  // Off the axis plane (Y10): contact where hypot(x, 10) = 21.
+  t = p.firstContact({40, 10, -10}, {0, 10, -10}, 1);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(40 - 40 * *t, std::sqrt(21.0 * 21 - 100), 1e-6);
+  // Along Z at radius 22: past the step's front, onto the shoulder at Z-30.
+  t = p.firstContact({22, 0, 10}, {22, 0, -50}, 1);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(10 - 60 * *t, -29, 1e-6);
+  // At radius 27 nothing is in the way.
+  EXPECT_FALSE(p.firstContact({27, 0, 10}, {27, 0, -90}, 1));
 }
