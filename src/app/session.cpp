@@ -2,6 +2,7 @@
 
 #include "app/machine_state.hpp"
 #include "sim/stock_model.hpp"
+#include "sim/stock_probe.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -100,23 +101,37 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   if (!main_) throw std::runtime_error("no program to run");
   EventSink none;
   // The stock model listens beside the caller's sink; it is built first so a setup it
-  // cannot simulate stops the job before anything runs.
-  std::unique_ptr<StockModel> stock = stockOn_ ? makeStockModel(setup_) : nullptr;
-  if (setup_.probe.useStock && (!stock || !stock->probeWorld()))
-    throw SetupError(stock ? "probe.use_stock: this stock model cannot be probed yet"
-                           : "probe.use_stock: G31 against the stock needs the stock simulation (--stock-out)",
+  // cannot simulate stops the job before anything runs. probe.use_stock simulates the
+  // stock even without simulateStock (then nothing is written).
+  if (setup_.probe.useStock && !setup_.stock.present)
+    throw SetupError("probe.use_stock: G31 against the stock needs a [stock] section",
                      "probe.use_stock");
-  FanoutSink both;
-  if (stock) {
-    if (sink) both.add(sink);
-    both.add(stock.get());
-    sink = &both;
-  }
+  std::unique_ptr<StockModel> stock =
+      stockOn_ || setup_.probe.useStock ? makeStockModel(setup_) : nullptr;
+  if (setup_.probe.useStock && !stock->probeWorld())
+    throw SetupError("probe.use_stock: this stock model cannot be probed", "probe.use_stock");
   // The time model sits between the control and the caller's sinks.
   std::unique_ptr<TimingStage> stage;
   // Without a sink the stage keeps no events, only what the time report needs.
   if (timing_) stage = std::make_unique<TimingStage>(setup_, sink);
-  Executor exec(setup_, store_, stage ? static_cast<EventSink&>(*stage) : sink ? *sink : none);
+  EventSink* first = stage ? static_cast<EventSink*>(stage.get()) : sink ? sink : &none;
+  // The stock takes every event straight from the control, before the stage's look-ahead
+  // holds cutting moves back: when a G31 asks the stock, every earlier move is in it. It
+  // needs no modelled times.
+  FanoutSink both;
+  if (stock) {
+    both.add(stock.get());
+    both.add(first);
+    first = &both;
+  }
+  Executor exec(setup_, store_, *first);
+  std::unique_ptr<StockProbe> stockProbe;
+  if (setup_.probe.useStock) {
+    const double unitsPerMm = setup_.initialUnit == InputUnit::Inch ? 1 / 25.4 : 1.0;
+    stockProbe = std::make_unique<StockProbe>(*stock->probeWorld(), unitsPerMm,
+                                              [&exec] { return exec.workOriginMm(); });
+    exec.setStockProbe(stockProbe.get());
+  }
   if (machineState) {
     MachineMemory mem = exec.memory();
     memoryFromJson(*machineState, setup_, mem);

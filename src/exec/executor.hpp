@@ -96,6 +96,13 @@ class Executor {
   void restartFromMemory();
   // What DPRNT/BPRNT wrote; the caller saves it (atomically) where the setup says.
   const std::string& printed() const { return printed_; }
+  // G31 also touches `world` (the simulated stock, probe.use_stock; machine mm, not owned);
+  // with [[solids]] too, the first contact of either counts.
+  void setStockProbe(const ProbeWorld* world) { stockProbe_ = world; }
+  // Machine position (mm, X Y Z; lathe X as a radius) of the active work system's origin:
+  // work offset, EXT, G52 and G92 shifts, without the tool offset. A tool tip at machine
+  // position P is at work position P - this.
+  Vec3 workOriginMm() const;
 
  private:
   friend struct ExecutorAccess;  // unit tests
@@ -164,6 +171,7 @@ class Executor {
   std::array<int64_t, kMaxAxes> g52_{}, g92_{}; // local system and G92/G50 shift
   std::array<int64_t, kMaxAxes> toolShift_{};   // tool length (mill) or tool offset (lathe)
   std::unique_ptr<SolidWorld> probeWorld_;
+  const ProbeWorld* stockProbe_ = nullptr;
   std::string eventName_;                       // storage behind OffsetEvent::name
   std::array<int64_t, kMaxAxes> programmed_{};  // work position of the last block end (#5001)
   std::array<int64_t, kMaxAxes> skip_{};

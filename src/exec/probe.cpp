@@ -41,6 +41,12 @@ void Executor::skipMove(const Words& w) {
   };
   std::optional<double> t;
   if (probeWorld_) t = probeWorld_->firstContact(tipMm(fromM), tipMm(toM), r);
+  if (stockProbe_) {
+    // The stock has seen every earlier move: the stock sink sits before any stage that
+    // holds moves back (app/session.cpp), and the block drained cutter compensation.
+    std::optional<double> s = stockProbe_->firstContact(tipMm(fromM), tipMm(toM), r);
+    if (s && (!t || *s < *t)) t = s;
+  }
   if (t) {
     for (size_t k = 0; k < kMaxAxes; ++k)
       toM[k] = fromM[k] + static_cast<int64_t>(std::llround(*t * static_cast<double>(toM[k] - fromM[k])));
@@ -84,6 +90,12 @@ void Executor::skipMove(const Words& w) {
   }
   sink().onSkip(ev);
   if (!t && probe.missAlarm) throw AlarmError(AlarmId::SkipNotReceived);
+}
+
+Vec3 Executor::workOriginMm() const {
+  Vec3 o{};
+  for (size_t k = 0; k < 3; ++k) o[k] = static_cast<double>(offset_[k] - toolShift_[k]) / 1e6;
+  return o;
 }
 
 }  // namespace ncvm

@@ -1,5 +1,7 @@
 #include "sim/lathe_stock.hpp"
 
+#include "sim/lathe_probe.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -145,6 +147,10 @@ void LatheStock::onTool(const ToolEvent& e) {
         "T{}: no [tools] entry and no offset row: simulated as a sharp tip-0 insert", e.tool));
   selectTool(spec);
   toolKnown_ = true;
+  // A touch probe touches (G31, probe.use_stock); it does not cut.
+  cuts_ = spec.type != "probe";
+  if (!cuts_)
+    notes_.push_back(fmt::format("T{}: a probe does not cut: its moves remove nothing", e.tool));
   tools_.push_back({{"t", e.tool},
                     {"type", spec.type},
                     {"nose_radius", spec.noseRadius},
@@ -158,6 +164,11 @@ double LatheStock::area() {
   double a = 0;
   for (const auto& t : tiles_) a += pathsArea(t.paths);
   return a;
+}
+
+std::optional<double> LatheStock::Probe::firstContact(const Vec3& a, const Vec3& b,
+                                                     double r) const {
+  return ProfileProbe(owner_.profile(), kScale).firstContact(a, b, r);
 }
 
 ClipperLib::Paths LatheStock::profile() {
@@ -314,7 +325,7 @@ void LatheStock::onMove(const MoveEvent& e) {
   pts.push_back(rz(e.end));
   if (!toolKnown_ && moves_ == 1 && !setup_.tools.empty())
     notes_.push_back("moves before the first T use a sharp insert");
-  cutPath(pts, e);
+  if (cuts_) cutPath(pts, e);
   if (setup_.target.present && setup_.target.fromN >= 0) captureTarget(e, pts);
 }
 

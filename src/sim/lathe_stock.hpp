@@ -24,6 +24,7 @@ class LatheStock final : public StockModel {
   void onTool(const ToolEvent& e) override;
   nlohmann::json finish(const std::string& outDir) override;
   nlohmann::json viewerStock(int maxGrid) override;
+  const ProbeWorld* probeWorld() const override { return &probe_; }
 
   // The pieces, for tests and benchmarks. Points are (radius, z) of the programmed point.
   void selectTool(const ToolSpec& tool);
@@ -85,6 +86,7 @@ class LatheStock final : public StockModel {
   nlohmann::json tools_ = nlohmann::json::array();
   std::vector<std::string> notes_;
   bool toolKnown_ = false;
+  bool cuts_ = true;  // false while a probe is in the turret
   // Statistics.
   uint64_t moves_ = 0, cuttingMoves_ = 0;
   double removed_ = 0;
@@ -96,6 +98,17 @@ class LatheStock final : public StockModel {
   lsim::Pt programmed_{};  // last programmed point (cutter compensation gives it apart)
   bool havePos_ = false;
   std::string targetSource_;
+
+  // G31 against the profile as cut so far (sim/lathe_probe.hpp): applies the queue first.
+  class Probe final : public ProbeWorld {
+   public:
+    explicit Probe(LatheStock& owner) : owner_(owner) {}
+    std::optional<double> firstContact(const Vec3& a, const Vec3& b, double r) const override;
+
+   private:
+    LatheStock& owner_;
+  };
+  Probe probe_{*this};
 };
 
 }  // namespace ncvm

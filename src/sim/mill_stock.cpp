@@ -10,6 +10,7 @@
 #include "report/mill_pictures.hpp"
 #include "report/stl_writer.hpp"
 #include "sim/heightfield_io.hpp"
+#include "sim/heightfield_probe.hpp"
 
 namespace ncvm {
 
@@ -182,6 +183,10 @@ void MillStock::arc(const MoveEvent& e, uint32_t t) {
     sim_->line(prev, next, rapid, t);
     prev = next;
   }
+}
+
+std::optional<double> MillStock::Probe::firstContact(const Vec3& a, const Vec3& b, double r) const {
+  return heightFieldFirstContact(owner_.sim_->field(), a, b, r);
 }
 
 nlohmann::json MillStock::finish(const std::string& outDir) {

@@ -23,6 +23,7 @@ class MillStock final : public StockModel {
   void onTool(const ToolEvent& e) override;
   nlohmann::json finish(const std::string& outDir) override;
   nlohmann::json viewerStock(int maxGrid) override;
+  const ProbeWorld* probeWorld() const override { return &probe_; }
 
   MillSim& sim() { return *sim_; }
   double cell() const { return cell_; }
@@ -32,6 +33,18 @@ class MillStock final : public StockModel {
   uint32_t tag(const MoveEvent& e);
   void arc(const MoveEvent& e, uint32_t tag);
   nlohmann::json analysis(const std::string& outDir);
+
+  // G31 against the field as cut so far (sim/heightfield_probe.hpp): applies the queued
+  // moves first.
+  class Probe final : public ProbeWorld {
+   public:
+    explicit Probe(MillStock& owner) : owner_(owner) {}
+    std::optional<double> firstContact(const Vec3& a, const Vec3& b, double r) const override;
+
+   private:
+    MillStock& owner_;
+  };
+  Probe probe_{*this};
 
   const Setup& setup_;
   double unit_ = 1, cell_ = 0.05, tol_ = 0.01;
