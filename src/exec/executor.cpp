@@ -103,12 +103,13 @@ const Program* Executor::findProgram(int32_t number, int32_t nameIdx) {
 void Executor::enter(const Program* p, FrameKind kind, int repeats, bool codeCalled) {
   if (!p->structural.empty()) {
     // Loop and label errors are known before the program runs (issue: before any motion).
-    // A block the compiler rejected earlier in the program is the likelier cause (a WHILE
-    // without a valid condition loses its DO, and then its END looks unmatched): the control
-    // would stop at that block first, so it is the one reported.
+    // A WHILE the compiler rejected earlier in the program is the cause of an unmatched END
+    // (its DO is lost): the control would stop at the WHILE first, so it is the one reported.
     const Alarm* first = &p->structural.front();
-    for (const Alarm& err : p->errors)
+    for (int32_t k : p->lostLoops) {
+      const Alarm& err = p->errors[static_cast<size_t>(k)];
       if (err.loc.file == first->loc.file && err.loc.line < first->loc.line) first = &err;
+    }
     const Alarm& a = *first;
     AlarmError e(a.code, a.text);
     e.hasLoc = true;

@@ -120,10 +120,13 @@ void Executor::polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& targe
                                   : std::hypot(cu, cv);
   double angle = nowAngle;
   if (hasAngle) {
-    // Degrees; without a decimal point in the metric least increment (0.001 deg for IS-B),
-    // whatever G20/G21 says: an angle is not a length (docs/fanuc-decisions.md).
-    double deg = w.hasPoint(angleL) ? w.value(angleL) : w.value(angleL) * leastIncrement(setup_.increment, InputUnit::Mm);
-    double rad = deg * std::numbers::pi / 180.0;
+    // Degrees, rounded to the metric least increment (0.001 deg for IS-B) whatever G20/G21
+    // says, as for a rotary axis: an angle is not a length (docs/fanuc-decisions.md). Without
+    // a decimal point (and without calculator-type input, 3401#0) the value counts increments.
+    const int64_t perDeg = incrementsPerUnit(setup_.increment, InputUnit::Mm);
+    const double v = w.value(angleL);
+    const int64_t inc = (!w.hasPoint(angleL) && !dpi_) ? static_cast<int64_t>(std::llround(v)) : roundToIncrements(v, perDeg);
+    double rad = static_cast<double>(inc) / static_cast<double>(perDeg) * std::numbers::pi / 180.0;
     angle = modal_.incremental ? nowAngle + rad : rad;
   }
   const double ou = fromHere ? cu : 0.0, ov = fromHere ? cv : 0.0;
@@ -438,13 +441,17 @@ void Executor::referencePositionCheck(const Words& w) {
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
   if (!axisTargets(w, target, mask)) return;
-  moveTo(target, MoveMode::Rapid, mask);
+  std::array<int64_t, kMaxAxes> here{};
+  for (size_t k = 0; k < kMaxAxes; ++k) here[k] = machine_[k] - offset_[k];
+  if (target != here) moveTo(target, MoveMode::Rapid, mask);  // no zero-length leg, as G28
   for (size_t k = 0; k < kMaxAxes; ++k) {
     if (!(mask & (1u << k))) continue;
     const AxisConfig& a = setup_.axes[k];
     int64_t nm = roundToIncrements(a.reference[0], incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
     if (a.diameter) nm /= 2;
-    if (machine_[k] != nm)
+    // The machine positions to its detection unit (the metric increment): an inch command
+    // 3.937 in = 99.9998 mm reaches a 100.000 mm reference.
+    if (std::llabs(machine_[k] - nm) * 2 >= nmPerIncMm_[k])
       throw AlarmError(AlarmId::ReferenceCheckError,
                        fmt::format("{} is at {:.4f}, its reference position is {:.4f} (machine, mm)", "XYZABC"[k],
                                    static_cast<double>(machine_[k]) / 1e6 * (a.diameter ? 2 : 1), a.reference[0]));

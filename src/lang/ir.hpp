@@ -127,6 +127,9 @@ struct Program {
   std::vector<std::string> strings;  // comments
   std::vector<Alarm> errors;         // block-level syntax errors (raised when reached)
   std::vector<Alarm> structural;     // DO/END and label errors (raised before running)
+  // Indices into `errors` of WHILE blocks (not block-skippable) that failed to compile: their
+  // DO is lost, so a structural error about its END is a consequence of the WHILE's error.
+  std::vector<int32_t> lostLoops;
   // Sequence numbers in program order: (N, block index).
   std::vector<std::pair<int32_t, uint32_t>> labels;
 

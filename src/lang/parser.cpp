@@ -94,6 +94,7 @@ class Compiler {
   Block blk_;
   int depth_ = 0;            // bracket nesting inside the current expression
   bool sawStatement_ = false;  // a macro statement is in this block
+  bool inWhile_ = false;       // the block's WHILE is being compiled
   uint16_t ncWords_ = 0;
   bool sawHeaderComment_ = false;
 
@@ -234,6 +235,7 @@ void Compiler::parseBlock(size_t b, size_t e) {
   blk_ = Block{};
   blk_.loc = SourceLoc{file_, line_, col()};
   sawStatement_ = false;
+  inWhile_ = false;
   ncWords_ = 0;
   size_t wordsBefore = prog_ ? prog_->words.size() : 0;
   try {
@@ -268,6 +270,7 @@ void Compiler::parseBlock(size_t b, size_t e) {
     Alarm a{err.code(), err.text(), SourceLoc{file_, line_, err.col ? err.col : blk_.loc.col},
             blk_.n >= 0 ? std::optional<int64_t>(blk_.n) : std::nullopt, p.number};
     p.errors.push_back(std::move(a));
+    if (inWhile_ && blk_.skipLevel == 0) p.lostLoops.push_back(static_cast<int32_t>(p.errors.size() - 1));
     Block bad = blk_;
     bad.kind = BlockKind::Error;
     bad.nWords = 0;
@@ -656,6 +659,7 @@ void Compiler::parseGotoTarget() {
 }
 
 void Compiler::parseWhile() {
+  inWhile_ = true;
   skipSpaces();
   uint32_t at = col();
   if (peek() != '[') fail(AlarmId::MacroStatementFormat, "WHILE needs [condition]", at);
