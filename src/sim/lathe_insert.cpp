@@ -104,4 +104,46 @@ std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b) {
   return hull;
 }
 
+void supportsAcross(const std::vector<Pt>& hull, Pt d, size_t& lo, size_t& hi) {
+  lo = hi = 0;
+  double slo = 0, shi = 0;
+  for (size_t k = 0; k < hull.size(); ++k) {
+    double s = d.z * hull[k].r - d.r * hull[k].z;
+    if (k == 0 || s < slo) lo = k, slo = s;
+    if (k == 0 || s > shi) hi = k, shi = s;
+  }
+}
+
+void sweepPath(const std::vector<Pt>& hull, const std::vector<Pt>& path, size_t lo, size_t hi,
+               std::vector<Pt>& out) {
+  out.clear();
+  const size_t n = hull.size();
+  if (n < 2 || path.empty()) return;
+  auto at = [&](size_t k, const Pt& p) { out.push_back({hull[k].r + p.r, hull[k].z + p.z}); };
+  // Counter-clockwise: the back chain (hi .. lo) at the first point, the lo side along the
+  // path, the front chain (lo .. hi) at the last point, the hi side back along the path.
+  for (size_t k = hi;; k = (k + 1) % n) {
+    at(k, path.front());
+    if (k == lo) break;
+  }
+  for (size_t j = 1; j + 1 < path.size(); ++j) at(lo, path[j]);
+  for (size_t k = lo;; k = (k + 1) % n) {
+    at(k, path.back());
+    if (k == hi) break;
+  }
+  for (size_t j = path.size() - 1; j-- > 1;) at(hi, path[j]);
+}
+
+void sweepConvex(const std::vector<Pt>& hull, Pt a, Pt b, std::vector<Pt>& out) {
+  const Pt d{b.r - a.r, b.z - a.z};
+  if ((d.r == 0 && d.z == 0) || hull.size() < 2) {
+    out.clear();
+    for (const Pt& p : hull) out.push_back({p.r + a.r, p.z + a.z});
+    return;
+  }
+  size_t lo = 0, hi = 0;
+  supportsAcross(hull, d, lo, hi);
+  sweepPath(hull, {a, b}, lo, hi, out);
+}
+
 }  // namespace ncvm::lsim

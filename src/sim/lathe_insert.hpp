@@ -26,4 +26,25 @@ std::vector<Pt> toolOutline(const ToolSpec& tool, double chordError, double defa
 // Counter-clockwise.
 std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b);
 
+// The same for a convex counter-clockwise outline (sweptHull(outline, {}, {}) of any outline)
+// in linear time, into `out`: the Minkowski sum of the outline and the segment, the outline's
+// back chain at a and its front chain at b. Edges parallel to the move may keep collinear
+// vertices.
+void sweepConvex(const std::vector<Pt>& hull, Pt a, Pt b, std::vector<Pt>& out);
+
+// The vertices of the convex counter-clockwise hull that are extreme across the direction
+// d (lowest and highest cross product d x v): the sweep's two sides leave from them.
+void supportsAcross(const std::vector<Pt>& hull, Pt d, size_t& lo, size_t& hi);
+
+// The area the hull sweeps along a polyline whose segments all have the same extreme
+// vertices lo and hi (supportsAcross): exactly the union of the segments' sweeps, as one
+// polygon. Each segment's sweep is the convex hull of the tool at its two ends, and each
+// contains the tool at the joints, so the union is bounded by the tool's back at the first
+// point, the lo vertex along the path, the tool's front at the last point and the hi vertex
+// back along the path; with the same extreme vertices the two sides meet at every joint
+// (the tool lies on the inner side of both segments' side lines there) and the union has
+// no other boundary. Counter-clockwise; with two points it is sweepConvex.
+void sweepPath(const std::vector<Pt>& hull, const std::vector<Pt>& path, size_t lo, size_t hi,
+               std::vector<Pt>& out);
+
 }  // namespace ncvm::lsim
