@@ -78,6 +78,25 @@ std::vector<Pt> toolOutline(const ToolSpec& t, double chordError, double default
   return out;
 }
 
+std::vector<Pt> holderOutline(const ToolSpec& t, double defaultEdge) {
+  if (t.holderDiameter <= 0 || t.holderLength <= 0) return {};
+  if (t.type != "insert" && t.diameter > 0) return {};
+  const lathe::TipSigns s = lathe::tipSigns(t.tip);
+  double r = t.noseRadius;
+  Pt centre{-r * s.x, -r * s.z};  // the nose centre, opposite the imaginary tip
+  // The shank's axis: +X for OD tools, along Z away from the tip for boring bars.
+  Pt axis = s.x > 0 ? Pt{0, s.z > 0 ? -1.0 : 1.0} : Pt{1, 0};
+  if (s.x > 0 && s.z == 0) axis = {0, 1};
+  Pt side{axis.z, axis.r};  // perpendicular to the axis (swap: the axes are orthogonal)
+  double edge = t.edgeLength > 0 ? t.edgeLength : defaultEdge;
+  double w = t.holderDiameter / 2, from = edge, to = edge + t.holderLength;
+  auto at = [&](double along, double across) {
+    return Pt{centre.r + axis.r * along + side.r * across,
+              centre.z + axis.z * along + side.z * across};
+  };
+  return {at(from, -w), at(to, -w), at(to, w), at(from, w)};
+}
+
 std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b) {
   std::vector<Pt> pts;
   pts.reserve(outline.size() * 2);

@@ -22,6 +22,14 @@ Pt tipDirection(int tip);
 // length when the tool gives none.
 std::vector<Pt> toolOutline(const ToolSpec& tool, double chordError, double defaultEdge);
 
+// The insert holder's shank when the tool gives holder_diameter (its width) and
+// holder_length: a rectangle whose axis passes through the nose centre, starting where the
+// cutting edges end (edge_length from the nose centre). An OD tool (imaginary tip towards
+// -X: tips 3, 4, 8, 0, 9, and the axial tips 5 and 7) has its shank along +X, a boring bar
+// (tip towards +X: 1, 2, 6) along Z, away from the tip. Empty without a holder, and for
+// drills (their body is the outline already).
+std::vector<Pt> holderOutline(const ToolSpec& tool, double defaultEdge);
+
 // Convex hull of the outline placed at a and at b: the area it sweeps moving from a to b.
 // Counter-clockwise.
 std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b);

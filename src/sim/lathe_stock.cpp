@@ -158,6 +158,8 @@ void LatheStock::refreshBounds(Tile& t) {
 void LatheStock::selectTool(const ToolSpec& tool) {
   // The outline's hull once, so each move's sweep is a linear-time Minkowski sum.
   outline_ = lsim::sweptHull(lsim::toolOutline(tool, chord_, 10 * unit_), {}, {});
+  holder_ = lsim::holderOutline(tool, 10 * unit_);
+  if (!holder_.empty()) holder_ = lsim::sweptHull(holder_, {}, {});
 }
 
 void LatheStock::onTool(const ToolEvent& e) {
@@ -290,6 +292,27 @@ bool LatheStock::touches(const ClipperLib::Path& poly) const {
   return false;
 }
 
+double LatheStock::overlap(const ClipperLib::Path& poly) {
+  if (!touches(poly)) return 0;
+  cInt zlo = poly.front().X, zhi = zlo;
+  for (const auto& q : poly) zlo = std::min(zlo, q.X), zhi = std::max(zhi, q.X);
+  long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
+  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                             static_cast<long>((zhi - tileZ0_) / tileW_));
+  double a = 0;
+  for (long k = first; k <= last; ++k) {
+    const Tile& t = tiles_[static_cast<size_t>(k)];
+    if (t.empty) continue;
+    clipper_.Clear();
+    clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
+    clipper_.AddPath(poly, ClipperLib::ptClip, true);
+    clipper_.Execute(ClipperLib::ctIntersection, result_, ClipperLib::pftNonZero,
+                     ClipperLib::pftNonZero);
+    a += pathsArea(result_);
+  }
+  return a;
+}
+
 bool LatheStock::queueLine(Pt a, Pt b) {
   const Pt d{b.r - a.r, b.z - a.z};
   if (d.r == 0 && d.z == 0) {  // the tool standing still: its outline alone
@@ -331,6 +354,26 @@ double LatheStock::flush() {
 }
 
 void LatheStock::cutPath(const std::vector<Pt>& pts, const MoveEvent& e) {
+  cutMove(pts, e);
+  if (holder_.size() < 3) return;
+  // The holder against the stock the move left (the insert cuts ahead of it): every move,
+  // feed or rapid. Material inside its swept area is a contact; grazing as for rapids.
+  flush();
+  double contact = 0;
+  for (size_t k = 1; k < pts.size(); ++k) {
+    lsim::sweepConvex(holder_, pts[k - 1], pts[k], swept_);
+    toPath(swept_, poly_);
+    contact += overlap(poly_);
+  }
+  if (contact > tol_ * tol_)
+    collisions_.push_back({{"kind", "holder"},
+                           {"program", e.at.programName ? *e.at.programName : std::string()},
+                           {"line", e.at.line},
+                           {"n", e.at.n},
+                           {"amount", contact}});
+}
+
+void LatheStock::cutMove(const std::vector<Pt>& pts, const MoveEvent& e) {
   if (e.mode != MoveMode::Rapid) {
     bool reached = false;
     for (size_t k = 1; k < pts.size(); ++k) {

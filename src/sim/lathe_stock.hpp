@@ -60,9 +60,11 @@ class LatheStock final : public StockModel {
   // Removes the convex counter-clockwise polygon from the tiles; returns the area removed.
   double apply(const ClipperLib::Path& poly, bool& reached);
   bool touches(const ClipperLib::Path& poly) const;
+  double overlap(const ClipperLib::Path& poly);  // area of the stock inside the polygon
   double applyWithMirror(const ClipperLib::Path& poly, bool* reached);
   void refreshBounds(Tile& t);
   void cutPath(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
+  void cutMove(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
   void captureTarget(const MoveEvent& e, const std::vector<lsim::Pt>& pts);
   void loadTargetFile();
   std::vector<Sample> measure(const ClipperLib::Paths& final) const;
@@ -90,6 +92,7 @@ class LatheStock final : public StockModel {
   size_t pendLo_ = 0, pendHi_ = 0;
   static constexpr size_t kMaxPending = 16;
   std::vector<lsim::Pt> outline_;  // the tool's convex hull, counter-clockwise in (z, r)
+  std::vector<lsim::Pt> holder_;   // the holder's rectangle (empty: no holder given)
   nlohmann::json tools_ = nlohmann::json::array();
   std::vector<std::string> notes_;
   bool toolKnown_ = false;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -225,4 +226,33 @@ TEST(LatheStock, BatchedFeedMovesCutWhatSingleMovesCut) {
   double restArea = 0;
   for (const auto& p : rest) restArea += std::fabs(ClipperLib::Area(p));
   EXPECT_LT(restArea / (LatheStock::kScale * LatheStock::kScale), 1e-6);
+}
+
+TEST(LatheInsert, HolderRunsAlongXForODToolsAndAlongZForBoringBars) {
+  ToolSpec t = roundInsert(0.4, 3);
+  t.edgeLength = 5;
+  t.holderDiameter = 20;
+  t.holderLength = 30;
+  auto box = [](const std::vector<Pt>& p) {
+    double r0 = 1e9, r1 = -1e9, z0 = 1e9, z1 = -1e9;
+    for (const Pt& q : p)
+      r0 = std::min(r0, q.r), r1 = std::max(r1, q.r), z0 = std::min(z0, q.z),
+      z1 = std::max(z1, q.z);
+    return std::array<double, 4>{r0, r1, z0, z1};
+  };
+  // Tip 3: nose centre (+0.4, +0.4) from the tip, shank r 5.4 .. 35.4, z -9.6 .. 10.4.
+  auto b = box(lsim::holderOutline(t, 10));
+  EXPECT_NEAR(b[0], 5.4, 1e-12);
+  EXPECT_NEAR(b[1], 35.4, 1e-12);
+  EXPECT_NEAR(b[2], -9.6, 1e-12);
+  EXPECT_NEAR(b[3], 10.4, 1e-12);
+  // Tip 2 (a boring bar towards the chuck): centre (-0.4, +0.4), shank along +Z.
+  t.tip = 2;
+  b = box(lsim::holderOutline(t, 10));
+  EXPECT_NEAR(b[0], -10.4, 1e-12);
+  EXPECT_NEAR(b[1], 9.6, 1e-12);
+  EXPECT_NEAR(b[2], 5.4, 1e-12);
+  EXPECT_NEAR(b[3], 35.4, 1e-12);
+  t.holderLength = 0;  // no holder given
+  EXPECT_TRUE(lsim::holderOutline(t, 10).empty());
 }
