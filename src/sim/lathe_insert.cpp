@@ -78,6 +78,25 @@ std::vector<Pt> toolOutline(const ToolSpec& t, double chordError, double default
   return out;
 }
 
+std::vector<Pt> holderOutline(const ToolSpec& t, double defaultEdge) {
+  if (t.holderDiameter <= 0 || t.holderLength <= 0) return {};
+  if (t.type != "insert" && t.diameter > 0) return {};
+  const lathe::TipSigns s = lathe::tipSigns(t.tip);
+  double r = t.noseRadius;
+  Pt centre{-r * s.x, -r * s.z};  // the nose centre, opposite the imaginary tip
+  // The shank's axis: +X for OD tools, along Z away from the tip for boring bars.
+  Pt axis = s.x > 0 ? Pt{0, s.z > 0 ? -1.0 : 1.0} : Pt{1, 0};
+  if (s.x > 0 && s.z == 0) axis = {0, 1};
+  Pt side{axis.z, axis.r};  // perpendicular to the axis (swap: the axes are orthogonal)
+  double edge = t.edgeLength > 0 ? t.edgeLength : defaultEdge;
+  double w = t.holderDiameter / 2, from = edge, to = edge + t.holderLength;
+  auto at = [&](double along, double across) {
+    return Pt{centre.r + axis.r * along + side.r * across,
+              centre.z + axis.z * along + side.z * across};
+  };
+  return {at(from, -w), at(to, -w), at(to, w), at(from, w)};
+}
+
 std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b) {
   std::vector<Pt> pts;
   pts.reserve(outline.size() * 2);
@@ -102,6 +121,48 @@ std::vector<Pt> sweptHull(const std::vector<Pt>& outline, Pt a, Pt b) {
   }
   hull.resize(k > 1 ? k - 1 : k);
   return hull;
+}
+
+void supportsAcross(const std::vector<Pt>& hull, Pt d, size_t& lo, size_t& hi) {
+  lo = hi = 0;
+  double slo = 0, shi = 0;
+  for (size_t k = 0; k < hull.size(); ++k) {
+    double s = d.z * hull[k].r - d.r * hull[k].z;
+    if (k == 0 || s < slo) lo = k, slo = s;
+    if (k == 0 || s > shi) hi = k, shi = s;
+  }
+}
+
+void sweepPath(const std::vector<Pt>& hull, const std::vector<Pt>& path, size_t lo, size_t hi,
+               std::vector<Pt>& out) {
+  out.clear();
+  const size_t n = hull.size();
+  if (n < 2 || path.empty()) return;
+  auto at = [&](size_t k, const Pt& p) { out.push_back({hull[k].r + p.r, hull[k].z + p.z}); };
+  // Counter-clockwise: the back chain (hi .. lo) at the first point, the lo side along the
+  // path, the front chain (lo .. hi) at the last point, the hi side back along the path.
+  for (size_t k = hi;; k = (k + 1) % n) {
+    at(k, path.front());
+    if (k == lo) break;
+  }
+  for (size_t j = 1; j + 1 < path.size(); ++j) at(lo, path[j]);
+  for (size_t k = lo;; k = (k + 1) % n) {
+    at(k, path.back());
+    if (k == hi) break;
+  }
+  for (size_t j = path.size() - 1; j-- > 1;) at(hi, path[j]);
+}
+
+void sweepConvex(const std::vector<Pt>& hull, Pt a, Pt b, std::vector<Pt>& out) {
+  const Pt d{b.r - a.r, b.z - a.z};
+  if ((d.r == 0 && d.z == 0) || hull.size() < 2) {
+    out.clear();
+    for (const Pt& p : hull) out.push_back({p.r + a.r, p.z + a.z});
+    return;
+  }
+  size_t lo = 0, hi = 0;
+  supportsAcross(hull, d, lo, hi);
+  sweepPath(hull, {a, b}, lo, hi, out);
 }
 
 }  // namespace ncvm::lsim

@@ -22,15 +22,13 @@ cInt toInt(double v) {
   return static_cast<cInt>(std::llround(v * LatheStock::kScale));
 }
 
-ClipperLib::Path toPath(const std::vector<Pt>& pts) {
-  ClipperLib::Path p;
-  p.reserve(pts.size());
+void toPath(const std::vector<Pt>& pts, ClipperLib::Path& p) {
+  p.clear();
   for (const Pt& q : pts) p.push_back({toInt(q.z), toInt(q.r)});  // X = z, Y = r
-  return p;
 }
 
-// Lowest r of a convex polygon over the z range [a, b] (its lower envelope there): a tile
-// whose material stays below it cannot be touched, the common case behind the nose.
+// Lowest r of a polygon over the z range [a, b] (its lower envelope there): a tile whose
+// material stays below it cannot be touched, the common case behind the nose.
 double lowestOver(const ClipperLib::Path& poly, cInt a, cInt b) {
   double best = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < poly.size(); ++k) {
@@ -50,6 +48,47 @@ double lowestOver(const ClipperLib::Path& poly, cInt a, cInt b) {
     best = std::min({best, at(lo), at(hi)});
   }
   return best;
+}
+
+// The part of the convex polygon `in` inside the box [z0, z1] x [r0, r1] (Sutherland-Hodgman,
+// one axis-parallel half-plane at a time), into `out`. The box is the tile's material bounds
+// grown by a margin, so the part cut away holds no material and the vertices made on the box
+// sides (rounded to whole units) only move edges outside the material: the difference with
+// the tile is the same, with a clip polygon of a third of the vertices (the edges and the far
+// side of the nose are gone), which is what Clipper's cost grows with.
+void clipToBox(const ClipperLib::Path& in, cInt z0, cInt z1, cInt r0, cInt r1,
+               ClipperLib::Path& out, ClipperLib::Path& scratch) {
+  out = in;
+  auto pass = [&](auto inside, auto cross) {
+    scratch.clear();
+    for (size_t k = 0; k < out.size(); ++k) {
+      const ClipperLib::IntPoint& p = out[k];
+      const ClipperLib::IntPoint& q = out[(k + 1) % out.size()];
+      bool pin = inside(p), qin = inside(q);
+      if (pin) scratch.push_back(p);
+      if (pin != qin) scratch.push_back(cross(p, q));
+    }
+    out.swap(scratch);
+  };
+  auto onZ = [](cInt z) {
+    return [z](const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& q) {
+      double t = static_cast<double>(z - p.X) / static_cast<double>(q.X - p.X);
+      return ClipperLib::IntPoint{
+          z, p.Y + static_cast<cInt>(std::llround(t * static_cast<double>(q.Y - p.Y)))};
+    };
+  };
+  auto onR = [](cInt r) {
+    return [r](const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& q) {
+      double t = static_cast<double>(r - p.Y) / static_cast<double>(q.Y - p.Y);
+      return ClipperLib::IntPoint{
+          p.X + static_cast<cInt>(std::llround(t * static_cast<double>(q.X - p.X))), r};
+    };
+  };
+  pass([z0](const ClipperLib::IntPoint& p) { return p.X >= z0; }, onZ(z0));
+  if (out.size() >= 3) pass([z1](const ClipperLib::IntPoint& p) { return p.X <= z1; }, onZ(z1));
+  if (out.size() >= 3) pass([r0](const ClipperLib::IntPoint& p) { return p.Y >= r0; }, onR(r0));
+  if (out.size() >= 3) pass([r1](const ClipperLib::IntPoint& p) { return p.Y <= r1; }, onR(r1));
+  if (out.size() < 3) out.clear();
 }
 
 double pathsArea(const ClipperLib::Paths& ps) {
@@ -119,10 +158,14 @@ void LatheStock::refreshBounds(Tile& t) {
 }
 
 void LatheStock::selectTool(const ToolSpec& tool) {
-  outline_ = lsim::toolOutline(tool, chord_, 10 * unit_);
+  // The outline's hull once, so each move's sweep is a linear-time Minkowski sum.
+  outline_ = lsim::sweptHull(lsim::toolOutline(tool, chord_, 10 * unit_), {}, {});
+  holder_ = lsim::holderOutline(tool, 10 * unit_);
+  if (!holder_.empty()) holder_ = lsim::sweptHull(holder_, {}, {});
 }
 
 void LatheStock::onTool(const ToolEvent& e) {
+  flush();  // the pending moves were made with the previous tool
   // The physical tool: [tools.T] by the turret number (T0101 -> 1) or by the whole T word
   // (101); without one, the nose radius and tip of the offset row of the same number.
   ToolSpec spec{"insert"};
@@ -180,109 +223,176 @@ ClipperLib::Paths LatheStock::profile() {
   return out;
 }
 
-LatheStock::Clip LatheStock::makeClip(ClipperLib::Path poly) {
-  Clip c{std::move(poly), 0, 0, 0, 0};
-  c.zlo = c.zhi = c.poly.front().X;
-  c.rlo = c.rhi = c.poly.front().Y;
-  for (const auto& q : c.poly) {
-    c.zlo = std::min(c.zlo, q.X), c.zhi = std::max(c.zhi, q.X);
-    c.rlo = std::min(c.rlo, q.Y), c.rhi = std::max(c.rhi, q.Y);
+double LatheStock::apply(const ClipperLib::Path& poly, bool& reached) {
+  if (poly.size() < 3 || tiles_.empty()) return 0;
+  cInt zlo = poly.front().X, zhi = zlo, rlo = poly.front().Y, rhi = rlo;
+  for (const auto& q : poly) {
+    zlo = std::min(zlo, q.X), zhi = std::max(zhi, q.X);
+    rlo = std::min(rlo, q.Y), rhi = std::max(rhi, q.Y);
   }
-  return c;
-}
-
-// Can the clip polygon touch the tile's material? Bounds first, then the clip's lower
-// envelope against the highest material of the tile.
-bool LatheStock::reaches(const Tile& t, const Clip& c) const {
-  if (t.empty || t.zmax <= c.zlo || t.zmin >= c.zhi || t.rmax <= c.rlo || t.rmin >= c.rhi)
-    return false;
-  return static_cast<double>(t.rmax) > lowestOver(c.poly, t.zmin, t.zmax);
-}
-
-bool LatheStock::queueClip(Clip c) {
-  bool reached = false;
-  if (!tiles_.empty() && c.zhi >= tileZ0_) {
-    long first = std::max<long>(0, static_cast<long>((c.zlo - tileZ0_) / tileW_));
-    long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
-                               static_cast<long>((c.zhi - tileZ0_) / tileW_));
-    for (long k = first; k <= last && !reached; ++k)
-      reached = reaches(tiles_[static_cast<size_t>(k)], c);
-  }
-  // A clip that cannot reach the material now cannot after the queue either: the queue
-  // only removes material.
-  if (reached) queue_.push_back(std::move(c));
-  return reached;
-}
-
-double LatheStock::flush() {
-  if (queue_.empty()) return 0;
-  cInt zlo = queue_.front().zlo, zhi = queue_.front().zhi;
-  for (const auto& c : queue_) zlo = std::min(zlo, c.zlo), zhi = std::max(zhi, c.zhi);
-  long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
-  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
-                             static_cast<long>((zhi - tileZ0_) / tileW_));
   double removed = 0;
-  for (long k = first; k <= last; ++k) {
-    Tile& t = tiles_[static_cast<size_t>(k)];
-    bool any = false;
-    for (const auto& c : queue_) {
-      if (!reaches(t, c)) continue;
-      if (!any) {
-        clipper_.Clear();
-        clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
-        any = true;
-      }
-      clipper_.AddPath(c.poly, ClipperLib::ptClip, true);
+  if (zhi >= tileZ0_) {
+    long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
+    long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                               static_cast<long>((zhi - tileZ0_) / tileW_));
+    for (long k = first; k <= last; ++k) {
+      Tile& t = tiles_[static_cast<size_t>(k)];
+      // Bounds first, then the sweep's lower envelope against the tile's highest material.
+      if (t.empty || t.zmax <= zlo || t.zmin >= zhi || t.rmax <= rlo || t.rmin >= rhi) continue;
+      clipToBox(poly, t.zmin - kMargin, t.zmax + kMargin, t.rmin - kMargin, t.rmax + kMargin,
+                boxed_, scratch_);
+      if (boxed_.empty() || static_cast<double>(t.rmax) <= lowestOver(boxed_, t.zmin, t.zmax))
+        continue;
+      reached = true;
+      clipper_.Clear();
+      clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
+      clipper_.AddPath(boxed_, ClipperLib::ptClip, true);
+      clipper_.Execute(ClipperLib::ctDifference, result_, ClipperLib::pftNonZero,
+                       ClipperLib::pftNonZero);
+      double after = pathsArea(result_);
+      if (t.area - after <= 0) continue;  // touched the bounds only
+      removed += t.area - after;
+      t.paths.swap(result_);
+      t.area = after;
+      refreshBounds(t);
     }
-    if (!any) continue;
-    ClipperLib::Paths out;
-    clipper_.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    double after = pathsArea(out);
-    if (t.area - after <= 0) continue;  // touched the bounds only
-    removed += t.area - after;
-    t.paths = std::move(out);
-    t.area = after;
-    refreshBounds(t);
   }
-  queue_.clear();
   removed_ += removed;
   return removed;
 }
 
-bool LatheStock::queueLine(Pt a, Pt b) {
-  ClipperLib::Path poly = toPath(lsim::sweptHull(outline_, a, b));
+double LatheStock::applyWithMirror(const ClipperLib::Path& poly, bool* reached) {
+  bool hit = false;
+  double removed = apply(poly, hit);
   // Past the spindle axis the tool cuts the other side of the part: the mirror image.
-  bool below =
-      std::any_of(poly.begin(), poly.end(), [](const ClipperLib::IntPoint& q) { return q.Y < 0; });
-  ClipperLib::Path mirror;
-  if (below) {
-    mirror = poly;
-    for (auto& q : mirror) q.Y = -q.Y;
-    std::reverse(mirror.begin(), mirror.end());
+  if (std::any_of(poly.begin(), poly.end(),
+                  [](const ClipperLib::IntPoint& q) { return q.Y < 0; })) {
+    mirror_.assign(poly.rbegin(), poly.rend());
+    for (auto& q : mirror_) q.Y = -q.Y;
+    removed += apply(mirror_, hit);
   }
-  bool reached = queueClip(makeClip(std::move(poly)));
-  if (below) reached |= queueClip(makeClip(std::move(mirror)));
-  return reached;
+  if (reached) *reached = hit;
+  return removed;
 }
 
-double LatheStock::cutLine(Pt a, Pt b) {
+double LatheStock::cutLine(Pt a, Pt b, bool* reached) {
   flush();
-  queueLine(a, b);
-  return flush();
+  lsim::sweepConvex(outline_, a, b, swept_);
+  toPath(swept_, poly_);
+  return applyWithMirror(poly_, reached);
+}
+
+// Can the polygon touch some tile's material? Bounds, then its lower envelope against the
+// tile's highest material.
+bool LatheStock::touches(const ClipperLib::Path& poly) const {
+  if (poly.size() < 3 || tiles_.empty()) return false;
+  cInt zlo = poly.front().X, zhi = zlo, rlo = poly.front().Y, rhi = rlo;
+  for (const auto& q : poly) {
+    zlo = std::min(zlo, q.X), zhi = std::max(zhi, q.X);
+    rlo = std::min(rlo, q.Y), rhi = std::max(rhi, q.Y);
+  }
+  if (zhi < tileZ0_) return false;
+  long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
+  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                             static_cast<long>((zhi - tileZ0_) / tileW_));
+  for (long k = first; k <= last; ++k) {
+    const Tile& t = tiles_[static_cast<size_t>(k)];
+    if (t.empty || t.zmax <= zlo || t.zmin >= zhi || t.rmax <= rlo || t.rmin >= rhi) continue;
+    if (static_cast<double>(t.rmax) > lowestOver(poly, t.zmin, t.zmax)) return true;
+  }
+  return false;
+}
+
+double LatheStock::overlap(const ClipperLib::Path& poly) {
+  if (!touches(poly)) return 0;
+  cInt zlo = poly.front().X, zhi = zlo;
+  for (const auto& q : poly) zlo = std::min(zlo, q.X), zhi = std::max(zhi, q.X);
+  long first = std::max<long>(0, static_cast<long>((zlo - tileZ0_) / tileW_));
+  long last = std::min<long>(static_cast<long>(tiles_.size()) - 1,
+                             static_cast<long>((zhi - tileZ0_) / tileW_));
+  double a = 0;
+  for (long k = first; k <= last; ++k) {
+    const Tile& t = tiles_[static_cast<size_t>(k)];
+    if (t.empty) continue;
+    clipper_.Clear();
+    clipper_.AddPaths(t.paths, ClipperLib::ptSubject, true);
+    clipper_.AddPath(poly, ClipperLib::ptClip, true);
+    clipper_.Execute(ClipperLib::ctIntersection, result_, ClipperLib::pftNonZero,
+                     ClipperLib::pftNonZero);
+    a += pathsArea(result_);
+  }
+  return a;
+}
+
+bool LatheStock::queueLine(Pt a, Pt b) {
+  const Pt d{b.r - a.r, b.z - a.z};
+  if (d.r == 0 && d.z == 0) {  // the tool standing still: its outline alone
+    bool hit = false;
+    cutLine(a, b, &hit);
+    return hit;
+  }
+  size_t lo = 0, hi = 0;
+  lsim::supportsAcross(outline_, d, lo, hi);
+  bool joins = !pending_.empty() && pending_.size() <= kMaxPending && lo == pendLo_ &&
+               hi == pendHi_ && pending_.back().r == a.r && pending_.back().z == a.z;
+  if (!joins) {
+    flush();
+    pending_ = {a};
+    pendLo_ = lo, pendHi_ = hi;
+  }
+  pending_.push_back(b);
+  // The move's own sweep against the stock as it stands (before the pending moves).
+  lsim::sweepPath(outline_, {a, b}, lo, hi, swept_);
+  toPath(swept_, poly_);
+  if (touches(poly_)) return true;
+  if (!std::any_of(poly_.begin(), poly_.end(),
+                   [](const ClipperLib::IntPoint& q) { return q.Y < 0; }))
+    return false;
+  mirror_.assign(poly_.rbegin(), poly_.rend());
+  for (auto& q : mirror_) q.Y = -q.Y;
+  return touches(mirror_);
+}
+
+double LatheStock::flush() {
+  if (pending_.size() < 2) {
+    pending_.clear();
+    return 0;
+  }
+  lsim::sweepPath(outline_, pending_, pendLo_, pendHi_, swept_);
+  pending_.clear();
+  toPath(swept_, poly_);
+  return applyWithMirror(poly_, nullptr);
 }
 
 void LatheStock::cutPath(const std::vector<Pt>& pts, const MoveEvent& e) {
+  cutMove(pts, e);
+  if (holder_.size() < 3) return;
+  // The holder against the stock the move left (the insert cuts ahead of it): every move,
+  // feed or rapid. Material inside its swept area is a contact; grazing as for rapids.
+  flush();
+  double contact = 0;
+  for (size_t k = 1; k < pts.size(); ++k) {
+    lsim::sweepConvex(holder_, pts[k - 1], pts[k], swept_);
+    toPath(swept_, poly_);
+    contact += overlap(poly_);
+  }
+  if (contact > tol_ * tol_)
+    collisions_.push_back({{"kind", "holder"},
+                           {"program", e.at.programName ? *e.at.programName : std::string()},
+                           {"line", e.at.line},
+                           {"n", e.at.n},
+                           {"amount", contact}});
+}
+
+void LatheStock::cutMove(const std::vector<Pt>& pts, const MoveEvent& e) {
   if (e.mode != MoveMode::Rapid) {
     bool reached = false;
     for (size_t k = 1; k < pts.size(); ++k) {
       reached |= queueLine(pts[k - 1], pts[k]);
-      if (queue_.size() >= kBatch) flush();
     }
     if (reached) ++cuttingMoves_;
     return;
   }
-  // A rapid is measured on its own, against the stock as the feed moves left it.
-  flush();
   double removed = 0;
   for (size_t k = 1; k < pts.size(); ++k) removed += cutLine(pts[k - 1], pts[k]);
   if (removed > 0) ++cuttingMoves_;

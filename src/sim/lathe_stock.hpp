@@ -28,12 +28,15 @@ class LatheStock final : public StockModel {
 
   // The pieces, for tests and benchmarks. Points are (radius, z) of the programmed point.
   void selectTool(const ToolSpec& tool);
-  // Removes the area swept from a to b now; returns the area removed (program units^2).
-  double cutLine(lsim::Pt a, lsim::Pt b);
-  // The same, deferred until flush() (feed moves queue up to kBatch sweeps). Returns
-  // whether the swept area reaches the material as it stood before the queue.
+  // Removes the area swept from a to b; returns the area removed (program units^2).
+  // `reached` (if given) is set when the swept area reaches a tile's material bounds.
+  double cutLine(lsim::Pt a, lsim::Pt b, bool* reached = nullptr);
+  // The same for a feed move, deferred: consecutive moves with the same extreme tool
+  // vertices are cut as one polygon (lsim::sweepPath) at flush(), or when the next move
+  // cannot join them. Returns whether the move's own sweep reaches the material as it stood
+  // before the pending moves (tile bounds and the sweep's lower envelope).
   bool queueLine(lsim::Pt a, lsim::Pt b);
-  double flush();  // applies the queue; returns the area removed
+  double flush();  // cuts the pending moves; returns the area removed
   double area();
   ClipperLib::Paths profile();           // the tiles merged: outer rings and holes
   static constexpr double kScale = 1e6;  // integer units per program unit
@@ -55,15 +58,14 @@ class LatheStock final : public StockModel {
     int n = -1;
   };
 
-  struct Clip {
-    ClipperLib::Path poly;
-    ClipperLib::cInt zlo, zhi, rlo, rhi;
-  };
-  static Clip makeClip(ClipperLib::Path poly);
-  bool reaches(const Tile& t, const Clip& c) const;
-  bool queueClip(Clip c);  // returns whether it reaches material
+  // Removes the convex counter-clockwise polygon from the tiles; returns the area removed.
+  double apply(const ClipperLib::Path& poly, bool& reached);
+  bool touches(const ClipperLib::Path& poly) const;
+  double overlap(const ClipperLib::Path& poly);  // area of the stock inside the polygon
+  double applyWithMirror(const ClipperLib::Path& poly, bool* reached);
   void refreshBounds(Tile& t);
   void cutPath(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
+  void cutMove(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
   void captureTarget(const MoveEvent& e, const std::vector<lsim::Pt>& pts);
   void loadTargetFile();
   std::vector<Sample> measure(const ClipperLib::Paths& final) const;
@@ -78,11 +80,20 @@ class LatheStock final : public StockModel {
   ClipperLib::cInt tileZ0_ = 0, tileW_ = 1;
   std::vector<Tile> tiles_;
   ClipperLib::Clipper clipper_;
-  std::vector<Clip> queue_;
-  // Sweeps of consecutive moves overlap, and Clipper pays for every crossing between clip
-  // polygons: batching 16 short moves per operation measured slower than one at a time.
-  static constexpr size_t kBatch = 1;
-  std::vector<lsim::Pt> outline_;
+  // Scratch paths kept between moves so their storage is reused.
+  std::vector<lsim::Pt> swept_;
+  ClipperLib::Path poly_, mirror_, boxed_, scratch_;
+  ClipperLib::Paths result_;
+  static constexpr ClipperLib::cInt kMargin = 64;  // units (64 nm) around a tile's material
+  // The pending feed moves: the path and the hull vertices its sides leave from. Separate
+  // sweeps of consecutive moves overlap, and Clipper pays for every crossing between clip
+  // polygons (16 of them per operation measured slower than one at a time); their union as
+  // one polygon has no crossings. The cap bounds the polygon's size.
+  std::vector<lsim::Pt> pending_;
+  size_t pendLo_ = 0, pendHi_ = 0;
+  static constexpr size_t kMaxPending = 16;
+  std::vector<lsim::Pt> outline_;  // the tool's convex hull, counter-clockwise in (z, r)
+  std::vector<lsim::Pt> holder_;   // the holder's rectangle (empty: no holder given)
   nlohmann::json tools_ = nlohmann::json::array();
   std::vector<std::string> notes_;
   bool toolKnown_ = false;
