@@ -195,6 +195,12 @@ char* TraceWriter::putAxesCached(char* p, std::string_view key, const AxisArray&
   const auto bytes = static_cast<size_t>(n) * sizeof(double);
   if (reuse && reuse->len && reuse->n == n && std::memcmp(reuse->v.data(), a.data(), bytes) == 0) {
     std::memcpy(p, reuse->text, reuse->len);
+    if (save && save != reuse) {
+      save->n = n;
+      save->v = a;
+      save->len = reuse->len;
+      std::memcpy(save->text, reuse->text, reuse->len);
+    }
     return p + reuse->len;
   }
   char* start = p;
@@ -244,7 +250,8 @@ void TraceWriter::onMove(const MoveEvent& e) {
   p = putAxesCached(p, "start", e.start, n, &lastEnd_, nullptr);
   p = putAxesCached(p, "end", e.end, n, nullptr, &lastEnd_);
   p = putAxesCached(p, "mstart", e.mstart, n, &lastMend_, nullptr);
-  p = putAxesCached(p, "mend", e.mend, n, nullptr, &lastMend_);
+  // Without offsets the machine end is the work end: the same text again.
+  p = putAxesCached(p, "mend", e.mend, n, &lastEnd_, &lastMend_);
   p = formatDouble(put(p, ",\"feed\":"), e.feed);
   p = formatDouble(put(p, ",\"length\":"), e.length);
   p = put(p, ",\"time\":");
