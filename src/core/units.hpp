@@ -28,13 +28,26 @@ inline int64_t incrementsPerUnit(IncrementSystem is, InputUnit u) {
   return u == InputUnit::Inch ? n * 10 : n;
 }
 
+// std::llround (halves away from zero) without the libm call: the truncated value and the
+// exact remainder x - trunc(x) decide. Values out of the int64 range (and NaN) go to llround.
+inline int64_t roundHalfAway(double x) {
+  if (!(std::fabs(x) < 9.0e18)) return static_cast<int64_t>(std::llround(x));
+  auto i = static_cast<int64_t>(x);
+  double rest = x - static_cast<double>(i);
+  if (rest >= 0.5)
+    ++i;
+  else if (rest <= -0.5)
+    --i;
+  return i;
+}
+
 // Rounds a value in program units to a whole number of increments, halves away from zero.
 // The nudge absorbs binary representation error (1.0005 is stored as 1.000499999...), so a
 // value written with a decimal point rounds as its decimal text does.
 inline int64_t roundToIncrements(double v, int64_t perUnit) {
   double x = v * static_cast<double>(perUnit);
   double nudge = 1e-9 * (1.0 + std::fabs(x) * 1e-6);
-  return static_cast<int64_t>(std::llround(x + (x >= 0 ? nudge : -nudge)));
+  return roundHalfAway(x + (x >= 0 ? nudge : -nudge));
 }
 
 // Nanometres (or micro-degrees) per increment.

@@ -224,6 +224,7 @@ class Executor {
 
   // nc_block.cpp
   void execNc(const Block& b);
+  bool plainMotion(Words& w);  // execNc's fast path for plain G00-G03 blocks
   void gatherWords(const Block& b, Words& w);
   bool codeCall(const Block& b, Words& w);
   void buildArgs(const Words& w, int callingM, std::array<Value, 33>& args, std::array<double, 33>& scale) const;
@@ -243,12 +244,20 @@ class Executor {
                    const std::array<int64_t, kMaxAxes>* base = nullptr);
   void polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask,
                     const std::array<int64_t, kMaxAxes>* base);
+  bool plainTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask);
   void moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t axesMask);
   void arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw);
   void arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu, double cv, bool cw);
   void rapidMachine(const std::array<int64_t, kMaxAxes>& targetMachine, uint32_t axesMask);
   void emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
                 const std::array<int64_t, kMaxAxes>& toMachine);
+  // The end of the last move emitMove converted, reused as the next move's start.
+  struct LastEmit {
+    bool valid = false, inch = false;
+    std::array<int64_t, kMaxAxes> toMachine{}, offset{};
+    AxisArray mend{}, end{};
+  };
+  LastEmit lastEmit_;
   double effectiveFeed();
   void dwell(const Words& w);
   void referenceReturn(const Words& w, int which);

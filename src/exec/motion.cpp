@@ -24,7 +24,7 @@ int64_t Executor::lengthNm(double v, bool point, int slot) const {
   int64_t perUnit = incrementsPerUnit(setup_.increment, u);
   int64_t nmPer = u == InputUnit::Inch ? nmPerIncInch_[s] : nmPerIncMm_[s];
   // Without a decimal point (and without calculator-type input) a value counts increments.
-  int64_t inc = (!point && !dpi_) ? static_cast<int64_t>(std::llround(v)) : roundToIncrements(v, perUnit);
+  int64_t inc = (!point && !dpi_) ? roundHalfAway(v) : roundToIncrements(v, perUnit);
   return inc * nmPer;
 }
 
@@ -135,6 +135,23 @@ void Executor::polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& targe
   mask |= (1u << pa.u) | (1u << pa.v);
 }
 
+// axisTargets for a block plainMotion takes (a mill, no words but X Y Z among the axis
+// letters): the same targets without the checks for letters that are not there.
+bool Executor::plainTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& mask) {
+  for (size_t k = 0; k < kMaxAxes; ++k) target[k] = machine_[k] - offset_[k];
+  mask = 0;
+  for (int k = 0; k < 3; ++k) {
+    const char L = "XYZ"[k];
+    const AxisConfig& a = setup_.axes[static_cast<size_t>(k)];
+    if (!w.has(L) || !a.present) continue;
+    int64_t nm = lengthNm(w.value(L), w.hasPoint(L), k);
+    if (a.diameter) nm /= 2;
+    target[static_cast<size_t>(k)] = modal_.incremental ? target[static_cast<size_t>(k)] + nm : nm;
+    mask |= 1u << k;
+  }
+  return mask != 0;
+}
+
 double Executor::effectiveFeed() {
   if (modal_.feed <= 0) throw AlarmError(AlarmId::FeedZero, "no F programmed");
   if (!modal_.feedPerRev) return modal_.feed;
@@ -163,13 +180,35 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
     e.nose = true;
     e.noseEnd = *noseEnd_;
   }
-  for (int k = 0; k < kMaxAxes; ++k) {
-    auto s = static_cast<size_t>(k);
-    e.mstart[s] = toProgramUnits(fromMachine[s], k, true);
-    e.mend[s] = toProgramUnits(toMachine[s], k, true);
-    e.start[s] = toProgramUnits(fromMachine[s] - offset_[s], k, true);
-    e.end[s] = toProgramUnits(toMachine[s] - offset_[s], k, true);
+  // toProgramUnits(nm, k, true) with the divisor looked up once per axis. A move starts
+  // where the last one ended unless the offsets or the unit changed in between: then its
+  // start is copied from that end, not converted again.
+  const bool inch = modal_.unit == InputUnit::Inch;
+  const double perLinear = inch ? static_cast<double>(kNmPerInch) : static_cast<double>(kNmPerMm);
+  if (lastEmit_.valid && lastEmit_.inch == inch && lastEmit_.toMachine == fromMachine &&
+      lastEmit_.offset == offset_) {
+    e.mstart = lastEmit_.mend;
+    e.start = lastEmit_.end;
+  } else {
+    for (size_t s = 0; s < kMaxAxes; ++s) {
+      const double per = setup_.axes[s].rotary ? 1e6 : perLinear;
+      const double dia = setup_.axes[s].diameter ? 2.0 : 1.0;  // v * 1.0 is v
+      e.mstart[s] = static_cast<double>(fromMachine[s]) / per * dia;
+      e.start[s] = static_cast<double>(fromMachine[s] - offset_[s]) / per * dia;
+    }
   }
+  for (size_t s = 0; s < kMaxAxes; ++s) {
+    const double per = setup_.axes[s].rotary ? 1e6 : perLinear;
+    const double dia = setup_.axes[s].diameter ? 2.0 : 1.0;
+    e.mend[s] = static_cast<double>(toMachine[s]) / per * dia;
+    e.end[s] = static_cast<double>(toMachine[s] - offset_[s]) / per * dia;
+  }
+  lastEmit_.valid = true;
+  lastEmit_.inch = inch;
+  lastEmit_.toMachine = toMachine;
+  lastEmit_.offset = offset_;
+  lastEmit_.mend = e.mend;
+  lastEmit_.end = e.end;
   ++stats_.moves;
   if (e.mode == MoveMode::Rapid) stats_.rapidLength += e.length;
   else stats_.feedLength += e.length;

@@ -186,9 +186,57 @@ void Executor::deriveModal() {
   modal_.unit = (unitCode == 200 || unitCode == 700) ? InputUnit::Inch : InputUnit::Mm;
 }
 
+// A block of nothing but G00/G01/G02/G03 and X Y Z F I J K R words on a mill, with no
+// cutter compensation, transform, polar coordinates (G16), canned cycle, modal call (G66), corner word (,C/,R) or
+// code call of its G code in effect: of execNc's generic order only the modal G code, F and
+// the move do anything, so they run here without the walk through every other word and
+// mode (the bulk of a CAM program). Returns false, having changed nothing, for any other
+// block.
+bool Executor::plainMotion(Words& w) {
+  constexpr uint32_t kPlain = bit('G') | bit('X') | bit('Y') | bit('Z') | bit('F') | bit('I') |
+                              bit('J') | bit('K') | bit('R');
+  if (lathe_ || (w.present & ~kPlain) || w.nm || w.ng > 1 || w.nameIdx >= 0 || w.hasCorner())
+    return false;
+  if (modal_.g[7] != 400 || modal_.g[9] != 800 || modal_.g[17] != 150 || !modalCalls_.empty() ||
+      xf_.active() || cornerHold_ || crcCorner_ || crcBusy())
+    return false;
+  if (w.ng == 1) {
+    const int code = w.g[0];
+    if ((code != 0 && code != 10 && code != 20 && code != 30) ||
+        gCall_[static_cast<size_t>(code / 10)] > 0)
+      return false;
+    const GCodeInfo* info = gInfo(code);
+    if (!info || info->status == GStatus::NotYet || info->group != 1) return false;
+    applyModalG(code, *info);
+  }
+  deriveModal();
+  exactStop_ = modal_.g[15] == 610;  // G61 (a G09 block is not plain)
+  if (w.has('F')) {
+    double fv = w.value('F');
+    if (fv < 0) throw AlarmError(AlarmId::IllegalMinus, "F");
+    if (!w.hasPoint('F') && !dpi_ && modal_.feedPerRev)
+      fv *= leastIncrement(setup_.increment, modal_.unit);
+    modal_.feed = fv;
+  }
+  std::array<int64_t, kMaxAxes> target{};
+  uint32_t mask = 0;
+  const bool arc = modal_.motion == 20 || modal_.motion == 30;
+  const bool hasAxes = plainTargets(w, target, mask);
+  if (arc && (hasAxes || w.any("IJKR"))) {
+    plannedBlock(w, target, mask, true, modal_.motion == 20);
+  } else if (hasAxes) {
+    // plannedBlock without a held corner or a transform is the move itself.
+    moveTo(target, modal_.motion == 0 ? MoveMode::Rapid : MoveMode::Linear, mask);
+    programmed_ = target;
+  }
+  ++frames_.back().pc;  // programControl without M codes, G66 or a code call
+  return true;
+}
+
 void Executor::execNc(const Block& b) {
   Words w;
   gatherWords(b, w);
+  if (plainMotion(w)) return;
   Frame& f = frames_.back();
 
   if (!f.codeCalled && codeCall(b, w)) return;
@@ -533,8 +581,9 @@ void Executor::auxFunctions(Words& w) {
 void Executor::programControl(Words& w, bool moved) {
   Frame& f = frames_.back();
   ++f.pc;
-  const std::string comment =
-      block_->comment >= 0 ? f.prog->strings[static_cast<size_t>(block_->comment)] : std::string();
+  const std::string_view comment =
+      block_->comment >= 0 ? std::string_view(f.prog->strings[static_cast<size_t>(block_->comment)])
+                           : std::string_view();
   for (int k = 0; k < w.nm; ++k) {
     int m = w.m[static_cast<size_t>(k)];
     if (m == 0) {

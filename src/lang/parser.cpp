@@ -172,6 +172,7 @@ class Compiler {
     return static_cast<int32_t>(prog_->consts.size() - 1);
   }
   double parseNumberText(bool& hasPoint, int& intDigits);
+  double parseNumberSlow(bool& hasPoint, int& intDigits);
 };
 
 ParsedFile Compiler::run() {
@@ -434,11 +435,42 @@ void Compiler::commitBlock() {
 }
 
 double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
-  // One pass: scan the digits and build the value. When the digits form an integer below
-  // 2^53 and at most 22 of them follow the point, mantissa / 10^frac is one correctly rounded
-  // division of two exact doubles, the same double from_chars returns (Clinger's fast path).
-  // Longer numbers fall back to from_chars.
-  // Locals, not peek(): the loop runs for every character of every number.
+  // The common number (CAM output, at most 19 digits): one loop over the integer digits and
+  // one over the fraction digits. When the mantissa is at most 2^53, mantissa / 10^frac is
+  // one correctly rounded division of two exact doubles, the same double from_chars returns
+  // (Clinger's fast path). Anything else is scanned again by parseNumberSlow.
+  const char* text = s_.data();
+  const char* p = text + i_;
+  const char* const e = text + end_;
+  auto digit = [](char c) { return static_cast<unsigned>(c - '0') < 10u; };
+  bool neg = false;
+  if (p < e && (*p == '+' || *p == '-')) neg = *p == '-', ++p;
+  const char* intBegin = p;
+  uint64_t mantissa = 0;
+  while (p < e && digit(*p)) mantissa = mantissa * 10 + static_cast<uint64_t>(*p++ - '0');
+  const char* intEnd = p;
+  const char* fracBegin = p;
+  bool point = false;
+  if (p < e && *p == '.') {
+    point = true;
+    fracBegin = ++p;
+    while (p < e && digit(*p)) mantissa = mantissa * 10 + static_cast<uint64_t>(*p++ - '0');
+  }
+  const auto intLen = intEnd - intBegin, fracLen = p - fracBegin;
+  if (intLen + fracLen > 19 || mantissa > (uint64_t{1} << 53) || (point && p < e && *p == '.'))
+    return parseNumberSlow(hasPoint, intDigits);
+  const char* lead = intBegin;
+  while (lead < intEnd && *lead == '0') ++lead;  // leading zeros do not count as digits
+  hasPoint = point;
+  intDigits = static_cast<int>(intEnd - lead);
+  i_ = static_cast<size_t>(p - text);
+  if (intLen + fracLen == 0) return 0.0;  // "X." reads as zero
+  double v = static_cast<double>(mantissa) / kPow10[fracLen];
+  return neg ? -v : v;
+}
+
+double Compiler::parseNumberSlow(bool& hasPoint, int& intDigits) {
+  // Numbers of more than 19 digits, and two decimal points (an alarm at the second one).
   const char* text = s_.data();
   size_t start = i_, i = i_, end = end_;
   hasPoint = false;

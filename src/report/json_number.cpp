@@ -15,9 +15,13 @@ constexpr char kDigits2[] =
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
+// The digits are written backwards from the end, which is known from the digit count, so
+// they go straight to `out` (no scratch buffer and no memcpy call).
 char* writeUnsigned(char* out, uint64_t u) {
-  char tmp[24];
-  char* p = tmp + sizeof tmp;
+  int digits = 1;
+  for (uint64_t t = u; t >= 10; t /= 10) ++digits;
+  char* const end = out + digits;
+  char* p = end;
   while (u >= 100) {
     const char* d = kDigits2 + (u % 100) * 2;
     u /= 100;
@@ -31,9 +35,7 @@ char* writeUnsigned(char* out, uint64_t u) {
   } else {
     *--p = static_cast<char>('0' + u);
   }
-  size_t n = static_cast<size_t>(tmp + sizeof tmp - p);
-  std::memcpy(out, p, n);
-  return out + n;
+  return end;
 }
 }  // namespace
 

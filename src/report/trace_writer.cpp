@@ -99,6 +99,16 @@ const std::string& TraceWriter::fileName(uint32_t id) {
   return s;
 }
 
+// A program's name escaped; the same one as the event before is not escaped again.
+const std::string& TraceWriter::programName(const std::string& name) {
+  if (name != lastProgram_ || lastProgramEscaped_.empty()) {
+    lastProgram_ = name;
+    lastProgramEscaped_.clear();
+    escapeInto(lastProgramEscaped_, name);
+  }
+  return lastProgramEscaped_;
+}
+
 void TraceWriter::begin(const char* type, const EventOrigin& at) {
   buf_ += "{\"type\":\"";
   buf_ += type;
@@ -112,7 +122,8 @@ void TraceWriter::begin(const char* type, const EventOrigin& at) {
   else
     buf_ += "null";
   buf_ += ",\"prog\":";
-  if (at.programName) escapeInto(buf_, *at.programName);
+  if (at.programName)
+    buf_ += programName(*at.programName);
   else buf_ += "null";
 }
 
@@ -155,6 +166,59 @@ char* putAxes(char* p, std::string_view key, const double* a, int n) {
 }
 }  // namespace
 
+// begin("move", at), written into a caller's buffer (the names are at most a few kB, which
+// moveHead's caller leaves room for).
+char* TraceWriter::moveHead(char* p, const EventOrigin& at) {
+  p = put(p, "{\"type\":\"move\",\"file\":");
+  const std::string& file = fileName(at.file);
+  std::memcpy(p, file.data(), file.size());
+  p = put(p + file.size(), ",\"line\":");
+  p = formatInt(p, static_cast<int64_t>(at.line));
+  p = put(p, ",\"n\":");
+  p = at.n >= 0 ? formatInt(p, static_cast<int64_t>(at.n)) : put(p, "null");
+  p = put(p, ",\"prog\":");
+  if (!at.programName) return put(p, "null");
+  const std::string& prog = programName(*at.programName);
+  std::memcpy(p, prog.data(), prog.size());
+  return p + prog.size();
+}
+
+// putAxes, taking the text from `reuse` when it holds the same values (bit for bit) and
+// keeping the text written in `save`.
+char* TraceWriter::putAxesCached(char* p, std::string_view key, const AxisArray& a, int n,
+                                 AxesText* reuse, AxesText* save) {
+  *p++ = ',';
+  *p++ = '"';
+  std::memcpy(p, key.data(), key.size());
+  p += key.size();
+  p = put(p, "\":");
+  const auto bytes = static_cast<size_t>(n) * sizeof(double);
+  if (reuse && reuse->len && reuse->n == n && std::memcmp(reuse->v.data(), a.data(), bytes) == 0) {
+    std::memcpy(p, reuse->text, reuse->len);
+    if (save && save != reuse) {
+      save->n = n;
+      save->v = a;
+      save->len = reuse->len;
+      std::memcpy(save->text, reuse->text, reuse->len);
+    }
+    return p + reuse->len;
+  }
+  char* start = p;
+  *p++ = '[';
+  for (int k = 0; k < n; ++k) {
+    if (k) *p++ = ',';
+    p = formatDouble(p, a[static_cast<size_t>(k)]);
+  }
+  *p++ = ']';
+  if (save) {
+    save->n = n;
+    save->v = a;
+    save->len = static_cast<size_t>(p - start);
+    std::memcpy(save->text, start, save->len);
+  }
+  return p;
+}
+
 int TraceWriter::reportedAxes() const { return axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_); }
 
 void TraceWriter::axes(const char* key, const AxisArray& a) {
@@ -165,9 +229,17 @@ void TraceWriter::axes(const char* key, const AxisArray& a) {
 void TraceWriter::string(std::string_view s) { escapeInto(buf_, s); }
 
 void TraceWriter::onMove(const MoveEvent& e) {
-  begin("move", e.at);
-  // Everything after the origin has a bounded size: six axis arrays, the centre, the path
-  // points and a few numbers, each at most kNumberChars long.
+  // The head holds the file and program names, whatever their length; everything after it
+  // has a bounded size: six axis arrays, the centre, the path points and a few numbers, each
+  // at most kNumberChars long.
+  const size_t names =
+      fileName(e.at.file).size() + (e.at.programName ? programName(*e.at.programName).size() : 0);
+  if (names > 2048) {
+    begin("move", e.at);  // very long names: the general (slower) way
+  } else {
+    char head[2048 + 128];
+    buf_.append(head, static_cast<size_t>(moveHead(head, e.at) - head));
+  }
   char tmp[4096];
   char* p = put(tmp, ",\"mode\":\"");
   std::string_view mode = moveModeName(e.mode);
@@ -175,14 +247,25 @@ void TraceWriter::onMove(const MoveEvent& e) {
   p += mode.size();
   *p++ = '"';
   const int n = reportedAxes();
-  p = putAxes(p, "start", e.start.data(), n);
-  p = putAxes(p, "end", e.end.data(), n);
-  p = putAxes(p, "mstart", e.mstart.data(), n);
-  p = putAxes(p, "mend", e.mend.data(), n);
+  p = putAxesCached(p, "start", e.start, n, &lastEnd_, nullptr);
+  p = putAxesCached(p, "end", e.end, n, nullptr, &lastEnd_);
+  p = putAxesCached(p, "mstart", e.mstart, n, &lastMend_, nullptr);
+  // Without offsets the machine end is the work end: the same text again.
+  p = putAxesCached(p, "mend", e.mend, n, &lastEnd_, &lastMend_);
   p = formatDouble(put(p, ",\"feed\":"), e.feed);
   p = formatDouble(put(p, ",\"length\":"), e.length);
-  p = formatDouble(put(p, ",\"time\":"), e.time);
-  p = formatDouble(put(p, ",\"time_simple\":"), e.timeSimple >= 0 ? e.timeSimple : e.time);
+  p = put(p, ",\"time\":");
+  char* timeText = p;
+  p = formatDouble(p, e.time);
+  const size_t timeLen = static_cast<size_t>(p - timeText);
+  p = put(p, ",\"time_simple\":");
+  const double simple = e.timeSimple >= 0 ? e.timeSimple : e.time;
+  if (std::memcmp(&simple, &e.time, sizeof simple) == 0) {
+    std::memmove(p, timeText, timeLen);  // the same double: the same text
+    p += timeLen;
+  } else {
+    p = formatDouble(p, simple);
+  }
   if (e.arc) {
     p = putAxes(p, "center", e.center.data(), 3);
     p = formatInt(put(p, ",\"plane\":"), e.plane);

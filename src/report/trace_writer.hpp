@@ -39,6 +39,18 @@ class TraceWriter final : public EventSink {
   int reportedAxes() const;  // axes_ clamped to 3..kMaxAxes
   void string(std::string_view s);
   const std::string& fileName(uint32_t id);
+  const std::string& programName(const std::string& name);
+  char* moveHead(char* p, const EventOrigin& at);
+  // The text of an axis array ("[1.5,2,-3]") as last written, with its values: a move
+  // starts where the last one ended, so its start is usually that end's text again.
+  struct AxesText {
+    int n = 0;
+    AxisArray v{};
+    size_t len = 0;
+    char text[2 + kMaxAxes * 33];
+  };
+  char* putAxesCached(char* p, std::string_view key, const AxisArray& a, int n, AxesText* reuse,
+                      AxesText* save);
 
   const SourceFiles& files_;
   std::FILE* out_;
@@ -47,6 +59,8 @@ class TraceWriter final : public EventSink {
   std::string buf_;
   uint64_t written_ = 0;
   std::vector<std::string> escapedNames_;
+  std::string lastProgram_, lastProgramEscaped_;  // programName(): the last one escaped
+  AxesText lastEnd_, lastMend_;
 };
 
 }  // namespace ncvm
