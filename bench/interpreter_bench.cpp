@@ -46,7 +46,9 @@ void BM_WhileLoop(benchmark::State& state) {
 BENCHMARK(BM_WhileLoop)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 // A CAM finishing program: a raster over a wavy surface, X, Y and Z on every line (short
-// segments, small direction changes), as bench/gen_programs.py writes linear_1m.nc.
+// segments, small direction changes), as bench/gen_programs.py writes linear_1m.nc; one block
+// in 25 is an arc of R5 (G2 and G3 in turn, a helix where Z changes), as CAM arc fitting
+// writes them.
 std::string camProgram(int lines) {
   std::string s = "O0003\nG90 G21 G17 G94\nT1 M06\nS8000 M03\nG00 X0 Y0 Z5.\nG01 Z0 F3000.\n";
   s.reserve(static_cast<size_t>(lines) * 28);
@@ -55,7 +57,12 @@ std::string camProgram(int lines) {
     int row = k / perRow, col = k % perRow;
     double x = (row % 2 ? perRow - col : col) * 0.2, y = row * 0.5;
     double z = -1.0 + 0.5 * std::sin(x * 0.05) * std::cos(y * 0.07);
-    s += fmt::format("X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
+    if (col % 25 == 12)
+      s += fmt::format("G{} X{:.3f} Y{:.3f} Z{:.3f} R5.\n", (k / 25) % 2 ? 2 : 3, x, y, z);
+    else if (col % 25 == 13)
+      s += fmt::format("G1 X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
+    else
+      s += fmt::format("X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
   }
   s += "G00 Z50.\nM05\nM30\n";
   return s;

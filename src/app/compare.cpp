@@ -54,6 +54,35 @@ std::string number(double v, bool decimals) {
   return fmt::format("{:.3f}", v);
 }
 
+std::string diffCells(double va, double vb) {
+  return fmt::format("{:>14.3f} {:>14.3f} {:>14} {:>9}\n", va, vb,
+                     (vb - va > 0 ? "+" : "") + fmt::format("{:.3f}", vb - va),
+                     va != 0 ? fmt::format("{:.1f}%", vb / va * 100.0) : "-");
+}
+
+// Per operation (from tool change to tool change, or from comment to comment), side by side
+// in program order, when either program has more than one or names one.
+std::string operationRows(const Session::Result& a, const Session::Result& b) {
+  static const std::vector<OperationTime> none;
+  const auto& oa = a.timing ? a.timing->operations() : none;
+  const auto& ob = b.timing ? b.timing->operations() : none;
+  bool named = false;
+  for (const auto* v : {&oa, &ob})
+    for (const auto& o : *v) named = named || !o.label.empty();
+  if (oa.size() <= 1 && ob.size() <= 1 && !named) return {};
+  std::string out;
+  for (size_t k = 0; k < std::max(oa.size(), ob.size()); ++k) {
+    const OperationTime& o = k < oa.size() ? oa[k] : ob[k];
+    std::string label = o.label.empty() && k < ob.size() ? ob[k].label : o.label;
+    std::string name =
+        fmt::format("  op {} T{}{}{}", k + 1, o.tool, label.empty() ? "" : " ", label);
+    if (name.size() > 27) name = name.substr(0, 26) + "~";
+    double va = k < oa.size() ? oa[k].time.model : 0, vb = k < ob.size() ? ob[k].time.model : 0;
+    out += fmt::format("{:<30} ", name + ", s") + diffCells(va, vb);
+  }
+  return out;
+}
+
 std::string endText(const Session::Result& r) {
   return r.alarm ? fmt::format("alarm {}", r.alarm->code) : std::string(endReasonName(r.end));
 }
@@ -94,6 +123,7 @@ std::string compareText(const ComparedRun& a, const ComparedRun& b, bool dynamic
                       va != 0 ? fmt::format("{:.1f}%", vb / va * 100.0) : "-");
     }
   }
+  out += operationRows(a.result, b.result);
   double ta0 = rows(dynamic)[0].get(a.result), tb0 = rows(dynamic)[0].get(b.result);
   if (ta0 > 0 && tb0 > 0) {
     out += tb0 < ta0 ? fmt::format("B is {:.3f} s ({:.1f}%) faster than A\n", ta0 - tb0,

@@ -68,6 +68,13 @@ struct MessageEvent {
   std::string_view source;  // "#3006", "M00", "M01"
 };
 
+// A block with nothing but a comment (and perhaps N) on its line, as CAM systems name their
+// operations: `(ROUGH FACE)`. The program's title after O is not one.
+struct CommentEvent {
+  EventOrigin at;
+  std::string_view text;
+};
+
 struct AlarmEvent {
   EventOrigin at;
   std::string_view code;
@@ -131,6 +138,7 @@ class EventSink {
   virtual void onAux(const AuxEvent&) {}
   virtual void onOffset(const OffsetEvent&) {}
   virtual void onSkip(const SkipEvent&) {}
+  virtual void onComment(const CommentEvent&) {}
 };
 
 // Forwards every event to several sinks in order.
@@ -147,6 +155,7 @@ class FanoutSink final : public EventSink {
   void onAux(const AuxEvent& e) override { for (auto* s : sinks_) s->onAux(e); }
   void onOffset(const OffsetEvent& e) override { for (auto* s : sinks_) s->onOffset(e); }
   void onSkip(const SkipEvent& e) override { for (auto* s : sinks_) s->onSkip(e); }
+  void onComment(const CommentEvent& e) override { for (auto* s : sinks_) s->onComment(e); }
 
  private:
   std::vector<EventSink*> sinks_;

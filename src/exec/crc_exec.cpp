@@ -52,6 +52,11 @@ void Executor::DeferSink::onOffset(const OffsetEvent& e) {
   });
 }
 void Executor::DeferSink::onSkip(const SkipEvent& e) { ex->deferEvent([e](EventSink& s) { s.onSkip(e); }); }
+void Executor::DeferSink::onComment(const CommentEvent& e) {
+  std::string text(e.text);
+  EventOrigin at = e.at;
+  ex->deferEvent([at, text](EventSink& s) { s.onComment(CommentEvent{at, text}); });
+}
 
 void Executor::deferEvent(std::function<void(EventSink&)> replay) {
   Pending p;

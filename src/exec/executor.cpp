@@ -300,6 +300,9 @@ bool Executor::step() {
   deferring_ = crcBusy();
   switch (b.kind) {
     case BlockKind::Empty:
+      // A comment alone on its line names what follows (the time report's operations).
+      if (b.comment >= 0)
+        sink().onComment(CommentEvent{origin_, prog.strings[static_cast<size_t>(b.comment)]});
       ++f.pc;
       break;
     case BlockKind::Error: {

@@ -349,6 +349,7 @@ class Executor {
     void onAux(const AuxEvent& e) override;
     void onOffset(const OffsetEvent& e) override;
     void onSkip(const SkipEvent& e) override;
+    void onComment(const CommentEvent& e) override;
   };
   struct Pending {
     int tag = -1;                   // >= 0: a compensated move waiting for its path

@@ -168,7 +168,7 @@ Profile makeProfile(double v0, double v1, double vmax, double len, const Ramp& r
   return p;
 }
 
-double Profile::timeAt(double s) const {
+double Profile::timeOutsideCruise(double s) const {
   if (s <= 0) return 0;
   if (s >= len) return total();
   if (s <= dUp) return rampTimeAt(v0, vp - v0, r, s);

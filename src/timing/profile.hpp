@@ -29,7 +29,12 @@ struct Profile {
   Ramp r;
   double dUp = 0, tUp = 0, dDown = 0, tDown = 0, tCruise = 0;
   double total() const { return tUp + tCruise + tDown; }
-  double timeAt(double s) const;
+  // Inline for the cruise, where most blocks of a long stretch end.
+  double timeAt(double s) const {
+    if (s > dUp && s <= len - dDown && vp > 0) return tUp + (s - dUp) / vp;
+    return timeOutsideCruise(s);
+  }
+  double timeOutsideCruise(double s) const;
 };
 Profile makeProfile(double v0, double v1, double vmax, double len, const Ramp& r);
 

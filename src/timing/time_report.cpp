@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ncvm {
 
@@ -11,21 +12,51 @@ const char* timeKindName(TimeKind k) {
 }
 
 OperationTime& TimeReport::op() {
-  if (ops_.empty()) ops_.push_back(OperationTime{tool_, EventOrigin{}, {}, 0, 0, {}});
+  if (ops_.empty()) {
+    ops_.emplace_back();
+    ops_.back().tool = tool_;
+  }
   return ops_.back();
 }
 
 void TimeReport::toolSelected(int tool, const EventOrigin& at) {
   if (tool == tool_ && !ops_.empty()) return;
   tool_ = tool;
-  // A new operation begins with each tool; an empty first one (nothing ran yet) is reused.
-  if (!ops_.empty() && ops_.back().time.model == 0 && ops_.back().time.simple == 0 &&
-      ops_.size() == 1) {
+  // A new operation begins with each tool; an empty first one (nothing ran yet) is reused,
+  // and so is one a comment just started (the CAM system's name, then its tool change).
+  if (!ops_.empty() && ((ops_.back().time.model == 0 && ops_.back().time.simple == 0 &&
+                         ops_.size() == 1 && !ops_.back().byComment) ||
+                        (ops_.back().byComment && ops_.back().moves == 0))) {
     ops_.back().tool = tool;
-    ops_.back().first = at;
+    if (!ops_.back().byComment) ops_.back().first = at;
     return;
   }
-  ops_.push_back(OperationTime{tool, at, {}, 0, 0, {}});
+  ops_.emplace_back();
+  ops_.back().tool = tool;
+  ops_.back().first = at;
+}
+
+void TimeReport::commentSeen(std::string_view text, const EventOrigin& at) {
+  size_t b = text.find_first_not_of(' '), e = text.find_last_not_of(' ');
+  text = b == std::string_view::npos ? std::string_view{} : text.substr(b, e - b + 1);
+  if (text.empty()) return;
+  // Until the operation has moved, further comments describe it (the tool, the stock...):
+  // the first one names it.
+  if (!ops_.empty() && ops_.back().moves == 0) {
+    OperationTime& o = ops_.back();
+    if (o.label.empty()) {
+      o.label = std::string(text);
+      o.byComment = true;
+      if (o.first.line == 0) o.first = at;
+    }
+    return;
+  }
+  ops_.emplace_back();
+  OperationTime& o = ops_.back();
+  o.tool = tool_;
+  o.first = at;
+  o.label = std::string(text);
+  o.byComment = true;
 }
 
 // Out of the per-move path: the table grows by doubling, so this runs a few times per file.
@@ -50,6 +81,7 @@ void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double 
   OperationTime& o = op();
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
+  if (kind == TimeKind::Dwell) ++o.moves;
   lineSlot(at).add(model, simple);
 }
 
@@ -63,7 +95,19 @@ void TimeReport::addMoveTime(MoveMode mode, const EventOrigin& at, double length
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
   (rapid ? o.rapidLength : o.feedLength) += length;
+  ++o.moves;
   lineSlot(at).add(model, simple);
+}
+
+void TimeReport::addCutting(double model, double simple, double length, uint64_t moves) {
+  constexpr auto kind = static_cast<size_t>(TimeKind::Cutting);
+  total_.add(model, simple);
+  byKind_[kind].add(model, simple);
+  OperationTime& o = op();
+  o.time.add(model, simple);
+  o.byKind[kind].add(model, simple);
+  o.feedLength += length;
+  o.moves += moves;
 }
 
 void TimeReport::trackDrilling(const MoveEvent& e) {
@@ -120,19 +164,20 @@ std::vector<LineTime> TimeReport::topLines(size_t n) const {
     return a.at.line < b.at.line;
   };
   std::vector<LineTime> best;
+  if (n == 0) return best;
+  // Most lines lose to the n-th best on time alone: no record built for them.
+  double floor = -std::numeric_limits<double>::infinity();
   for (size_t f = 0; f < lines_.size(); ++f) {
     for (size_t ln = 0; ln < lines_[f].size(); ++ln) {
       const LineSlot& l = lines_[f][ln];
-      if (!l.count) continue;
-      // Most lines lose to the n-th best on time alone: no record built for them.
-      if (best.size() == n && n > 0 && l.time.model < best.back().time.model) continue;
+      if (l.time.model < floor || !l.count) continue;
       LineTime t{
           EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), l.n, l.programName},
           l.count, l.time};
-      if (best.size() == n && n > 0 && !before(t, best.back())) continue;
-      if (n == 0) break;
+      if (best.size() == n && !before(t, best.back())) continue;
       best.insert(std::upper_bound(best.begin(), best.end(), t, before), t);
       if (best.size() > n) best.pop_back();
+      if (best.size() == n) floor = best.back().time.model;
     }
   }
   return best;
@@ -171,6 +216,7 @@ nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t
   for (const auto& o : ops_) {
     nlohmann::json e = pair(o.time);
     e["tool"] = o.tool;
+    e["label"] = o.label.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.label);
     e["start"] = where(o.first, files);
     e["path_length"] = {{"rapid", o.rapidLength}, {"feed", o.feedLength}};
     nlohmann::json k = nlohmann::json::object();

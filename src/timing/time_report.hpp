@@ -5,6 +5,8 @@
 // retracts), so two drilling strategies can be compared.
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -28,7 +30,10 @@ struct ToolTime {
 
 struct OperationTime {
   int tool = 0;
-  EventOrigin first;  // the block that started it (tool change), or the program start
+  EventOrigin first;       // the block that started it (tool change, comment), or the program start
+  std::string label;       // the comment that named it (empty: none)
+  bool byComment = false;  // started by a comment
+  uint64_t moves = 0;      // moves and dwells so far (an operation without any can be merged)
   TimePair time;
   double rapidLength = 0, feedLength = 0;
   std::array<TimePair, kTimeKinds> byKind{};
@@ -59,8 +64,16 @@ class TimeReport {
   void addMoveTime(MoveMode mode, const EventOrigin& at, double length, double model,
                    double simple);
   void trackDrilling(const MoveEvent& e);
+  // addMoveTime in two halves again, for a run of cutting moves planned as one profile: each
+  // block's time on its line, then the run's sums once.
+  void addLineTime(const EventOrigin& at, double model, double simple) {
+    lineSlot(at).add(model, simple);
+  }
+  void addCutting(double model, double simple, double length, uint64_t moves);
   void add(TimeKind kind, const EventOrigin& at, double model, double simple);
   void toolSelected(int tool, const EventOrigin& at);
+  // A comment alone on its line (operations by comment, docs/setup-format.md [timing]).
+  void commentSeen(std::string_view text, const EventOrigin& at);
 
   const TimePair& total() const { return total_; }
   const TimePair& byKind(TimeKind k) const { return byKind_[static_cast<size_t>(k)]; }
@@ -81,10 +94,12 @@ class TimeReport {
   std::vector<OperationTime> ops_;
   int tool_ = 0;
   // Per file, per line (lines are dense: a vector, not a map); file and line are the indexes.
+  // All zero until a block of the line runs (programName and n are set then), so the table
+  // grows by a plain memset.
   struct LineSlot {
-    const std::string* programName = nullptr;
-    int32_t n = -1;
-    uint32_t count = 0;
+    const std::string* programName;
+    int32_t n;
+    uint32_t count;
     TimePair time;
   };
   std::vector<std::vector<LineSlot>> lines_;

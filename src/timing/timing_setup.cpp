@@ -90,6 +90,8 @@ void applyTimingKey(TimingSetup& t, const std::string& key, const TimingValue& v
     t.spindleAccel = positive(v);
   else if (field == "spindle_wait")
     t.spindleWait = boolean(v);
+  else if (field == "operation_comments")
+    t.operationComments = boolean(v);
   else if (field == "feed_override")
     t.feedOverride = positive(v);
   else if (field == "rapid_override")
@@ -101,7 +103,7 @@ void applyTimingKey(TimingSetup& t, const std::string& key, const TimingValue& v
         "arc_clamp_feed arc_clamp_radius arc_clamp_min_feed block_time in_position_time "
         "tool_change_time t_code_time m_code_time coolant_time spindle_accel spindle_wait "
         "feed_override "
-        "rapid_override, axes.X.<per-axis key>");
+        "rapid_override operation_comments, axes.X.<per-axis key>");
 }
 
 }  // namespace ncvm

@@ -32,6 +32,9 @@ struct TimingSetup {
   double spindleAccel = 5000;   // rpm/s, spindle ramps and G96 following
   bool spindleWait = true;      // M03/M04/M05/S wait for the speed arrival (SAR)
   double feedOverride = 100, rapidOverride = 100;  // percent
+  // A comment alone on its line starts an operation of the time report (as a tool change
+  // does) and names it; false: operations start at tool changes only.
+  bool operationComments = true;
 };
 
 // A [timing] value from the setup file or --set.

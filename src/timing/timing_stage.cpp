@@ -38,10 +38,25 @@ TimingStage::TimingStage(const Setup& setup, EventSink* next)
     cornerDiff_[k] = t_.cornerSpeedDiff[k] / 60.0;
   }
   tMin_ = t_.minBlockTimeMs / 1000.0;
+  threeAxes_ = true;
+  for (size_t k = 3; k < kMaxAxes; ++k) threeAxes_ = threeAxes_ && !setup.axes[k].present;
+  size_t axes = threeAxes_ ? 3 : kMaxAxes;
+  uniform_ = true;
+  slowest_ = Ramp{kInf, kInf};
+  slowestValid_ = true;
+  for (size_t k = 0; k < axes; ++k) {
+    uniform_ = uniform_ && accel_[k] == accel_[0] && jerk_[k] == jerk_[0] &&
+               cornerDiff_[k] == cornerDiff_[0];
+    slowestValid_ = slowestValid_ && accel_[k] > 0 && std::isfinite(accel_[k]);
+    slowest_.a = std::min(slowest_.a, accel_[k]);
+    if (jerk_[k] > 0) slowest_.j = std::min(slowest_.j, jerk_[k]);
+  }
+  if (std::isinf(slowest_.j)) slowest_.j = 0;
+  look_ = static_cast<size_t>(std::max(1, t_.lookaheadBlocks));
+  trigger_ = 4 * look_ + 256;
   if (t_.dynamic) {
-    size_t cap = 4 * static_cast<size_t>(std::max(1, t_.lookaheadBlocks)) + 256;
-    held_.reserve(cap);
-    if (next_) events_.reserve(cap);
+    held_.reserve(trigger_);
+    if (next_) events_.reserve(trigger_);
   }
 }
 
@@ -88,62 +103,81 @@ double TimingStage::spindleFeed(const MoveEvent& e, double lengthMm) {
 
 // ---- planning ----------------------------------------------------------------------------
 
-TimingStage::Segment TimingStage::segmentFor(const MoveEvent& e, AxisArray& dirIn,
-                                             AxisArray& dirOut) {
-  Segment s;
+// The block's length, feed and path limits, and its unit tangents at both ends (tanIn_,
+// tanOut_). Runs once per cutting move: no allocation, one square root for a line.
+void TimingStage::setSegment(const MoveEvent& e, Held& h) {
+  if (threeAxes_)
+    segment<3>(e, h);
+  else
+    segment<kMaxAxes>(e, h);
+}
+
+// N: the axes that can move (a three-axis machine has no A, B, C: half the work).
+template <size_t N>
+void TimingStage::segment(const MoveEvent& e, Held& h) {
   const AxisArray& scale = e.inch ? scaleInch_ : scaleMm_;
   AxisArray d{};
   double sq = 0;
-  for (size_t k = 0; k < kMaxAxes; ++k) {
+  for (size_t k = 0; k < N; ++k) {
     d[k] = (e.mend[k] - e.mstart[k]) * scale[k];
     sq += d[k] * d[k];
   }
   double unit = e.inch ? 25.4 : 1.0;
-  s.length = e.length * unit;
-  if (s.length <= kEps) {
-    s.length = 0;
-    s.vmax = kInf;
-    s.vJunction = kInf;
-    return s;
+  h.len = e.length * unit;
+  if (h.len <= kEps) {
+    h.len = 0;
+    h.vmax = kInf;
+    h.vJunction = kInf;
+    return;
   }
-  double feed = e.perRev > 0 ? spindleFeed(e, s.length) : e.feed * unit / 60.0;
-  feed *= t_.feedOverride / 100.0;
+  double feed = e.perRev > 0 ? spindleFeed(e, h.len) : e.feed * unit / 60.0;
+  if (t_.feedOverride != 100) feed *= t_.feedOverride / 100.0;
   double a = kInf, j = kInf;
   if (!e.arc) {
-    double chord = std::sqrt(sq);
-    for (size_t k = 0; k < kMaxAxes; ++k) {
-      double u = chord > 0 ? d[k] / chord : 0;
-      dirIn[k] = dirOut[k] = u;
-      if (std::fabs(u) > 1e-9) {
-        a = std::min(a, accel_[k] / std::fabs(u));
-        if (jerk_[k] > 0) j = std::min(j, jerk_[k] / std::fabs(u));
+    double inv = sq > 0 ? 1.0 / std::sqrt(sq) : 0.0;
+    if (uniform_) {
+      // min over the axes of accel / |u_k| is accel / max |u_k|.
+      double big = 0;
+      for (size_t k = 0; k < N; ++k) {
+        double u = d[k] * inv;
+        tanIn_[k] = u;
+        big = std::max(big, std::fabs(u));
+      }
+      if (big > 1e-9) {
+        a = accel_[0] / big;
+        if (jerk_[0] > 0) j = jerk_[0] / big;
+      }
+    } else {
+      for (size_t k = 0; k < N; ++k) {
+        double u = d[k] * inv;
+        tanIn_[k] = u;
+        if (std::fabs(u) > 1e-9) {
+          a = std::min(a, accel_[k] / std::fabs(u));
+          if (jerk_[k] > 0) j = std::min(j, jerk_[k] / std::fabs(u));
+        }
       }
     }
+    tanOut_ = tanIn_;
   } else {
     PlaneAxes pl = planeAxes(e.plane);
     auto P = static_cast<size_t>(pl.p), Q = static_cast<size_t>(pl.q),
          H = static_cast<size_t>(pl.h);
-    auto radial = [&](const AxisArray& pt, double& rp, double& rq) {
-      rp = (pt[P] - e.center[P]) * scale[P];
-      rq = (pt[Q] - e.center[Q]) * scale[Q];
-    };
-    double rp0, rq0, rp1, rq1;
-    radial(e.start, rp0, rq0);
-    radial(e.end, rp1, rq1);
-    double r = std::hypot(rp0, rq0);
+    double rp0 = (e.start[P] - e.center[P]) * scale[P], rq0 = (e.start[Q] - e.center[Q]) * scale[Q];
+    double rp1 = (e.end[P] - e.center[P]) * scale[P], rq1 = (e.end[Q] - e.center[Q]) * scale[Q];
+    double r = std::sqrt(rp0 * rp0 + rq0 * rq0), r1 = std::sqrt(rp1 * rp1 + rq1 * rq1);
     double dh = d[H];
-    double planar = std::sqrt(std::max(0.0, s.length * s.length - dh * dh));
+    double planar = std::sqrt(std::max(0.0, h.len * h.len - dh * dh));
     double sign = e.mode == MoveMode::Ccw ? 1.0 : -1.0;
-    auto tangent = [&](double rp, double rq, AxisArray& u) {
-      double rr = std::hypot(rp, rq);
+    auto tangent = [&](double rp, double rq, double rr, AxisArray& u) {
       u.fill(0);
       if (rr <= 0) return;
-      u[P] = -sign * rq / rr * planar / s.length;
-      u[Q] = sign * rp / rr * planar / s.length;
-      u[H] = dh / s.length;
+      double f = sign * planar / (rr * h.len);
+      u[P] = -rq * f;
+      u[Q] = rp * f;
+      u[H] = dh / h.len;
     };
-    tangent(rp0, rq0, dirIn);
-    tangent(rp1, rq1, dirOut);
+    tangent(rp0, rq0, r, tanIn_);
+    tangent(rp1, rq1, r1, tanOut_);
     // The tangent turns through the plane: the slower plane axis limits the path.
     for (size_t k : {P, Q}) {
       a = std::min(a, accel_[k]);
@@ -157,11 +191,31 @@ TimingStage::Segment TimingStage::segmentFor(const MoveEvent& e, AxisArray& dirI
       feed = std::min(feed, clamp);
     }
   }
-  s.vmax = feed;
+  h.vmax = feed;
   // The control cannot finish a block faster than it prepares one.
-  if (tMin_ > 0) s.vmax = std::min(s.vmax, s.length / tMin_);
-  s.ramp = Ramp{a, std::isinf(j) ? 0.0 : j};
-  return s;
+  if (tMin_ > 0) h.vmax = std::min(h.vmax, h.len / tMin_);
+  h.ramp = Ramp{a, std::isinf(j) ? 0.0 : j};
+}
+
+// Automatic corner deceleration: no axis may change its speed by more than 1783 at the joint.
+void TimingStage::setJunction(Held& h) {
+  if (!haveDir_) {
+    h.vJunction = held_.size() == 1 && entry_ == 0 ? 0.0 : kInf;
+  } else if (uniform_) {
+    double big = 0;
+    size_t n = threeAxes_ ? 3 : kMaxAxes;
+    for (size_t k = 0; k < n; ++k) big = std::max(big, std::fabs(tanIn_[k] - lastDir_[k]));
+    h.vJunction = big > 1e-9 ? cornerDiff_[0] / big : kInf;
+  } else {
+    double v = kInf;
+    for (size_t k = 0; k < kMaxAxes; ++k) {
+      double du = std::fabs(tanIn_[k] - lastDir_[k]);
+      if (du > 1e-9) v = std::min(v, cornerDiff_[k] / du);
+    }
+    h.vJunction = v;
+  }
+  lastDir_ = tanOut_;
+  haveDir_ = true;
 }
 
 double TimingStage::rapidTime(const MoveEvent& e) const {
@@ -209,93 +263,130 @@ double TimingStage::rapidTime(const MoveEvent& e) const {
   return time;
 }
 
-// Groups the held blocks into runs. A run ends at an exact stop, at a joint whose corner
+// Adds the next held block to the runs. A run ends at an exact stop, at a joint whose corner
 // speed is below the feed, where the feed changes by more than 20 %, and after 128 blocks
-// (so memory stays bounded; a cut inside a cruise costs nothing).
-void TimingStage::buildRuns(size_t look) {
-  size_t n = held_.size();
-  runs_.clear();
-  lengths_.assign(n + 1, 0.0);
-  for (size_t i = 0; i < n; ++i) lengths_[i + 1] = lengths_[i] + held_[i].s.length;
-  bool open = false;
-  size_t realBlocks = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const Segment& s = held_[i].s;
-    bool join = open && !runs_.back().stopAfter && std::isinf(runs_.back().exitCap);
-    if (join && s.length > 0 && realBlocks > 0) {
-      const Run& r = runs_.back();
-      double lo = std::min(r.vmax, s.vmax), hi = std::max(r.vmax, s.vmax);
-      join = s.vJunction >= lo * (1 - 1e-9) && lo >= 0.8 * hi && i - r.first < 128;
-    }
-    if (!join) {
-      runs_.push_back(Run{i, i, 0, kInf, s.vJunction, Ramp{kInf, 0}, false, kInf, 0, 0});
-      open = true;
-      realBlocks = 0;
-    }
-    Run& r = runs_.back();
-    r.last = i;
-    r.length += s.length;
-    r.stopAfter = s.stopAfter;
-    if (s.length > 0) {
-      if (realBlocks == 0) r.vJunction = std::min(r.vJunction, s.vJunction);
-      ++realBlocks;
-      r.vmax = std::min(r.vmax, s.vmax);
-      r.ramp.a = std::min(r.ramp.a, s.ramp.a);
-      if (s.ramp.j > 0) r.ramp.j = r.ramp.j > 0 ? std::min(r.ramp.j, s.ramp.j) : s.ramp.j;
-      // Look-ahead depth inside the run: at the end of block i the control must be able to
-      // stop within the look-ahead - 1 blocks it has read after it.
-      // That caps the run's speed; with nothing read ahead (look-ahead 1) it stops there.
-      size_t lastSeen = std::min(n, i + look);
-      if (lastSeen < n) {
-        double window = lengths_[lastSeen] - lengths_[i + 1];
-        if (window <= 0)
-          r.exitCap = 0;
-        else if (rampDistance(0, r.vmax, s.ramp) > window)  // else it stops in time at vmax
-          r.vmax = std::min(r.vmax, reachable(0, window, s.ramp));
-      }
-    }
+// (so memory stays bounded; a cut inside a cruise costs nothing). Each block is grouped once,
+// when the look-ahead window after it has been read (capped), or at a stop (not capped: the
+// control sees the stop).
+void TimingStage::group(bool capped) {
+  size_t i = grouped_++;
+  const Held& s = held_[i];
+  bool join = !runs_.empty() && !runs_.back().stopAfter && std::isinf(runs_.back().exitCap);
+  if (join && s.len > 0 && runs_.back().realBlocks > 0) {
+    const Run& r = runs_.back();
+    double lo = std::min(r.vmax, s.vmax), hi = std::max(r.vmax, s.vmax);
+    join = s.vJunction >= lo * (1 - 1e-9) && lo >= 0.8 * hi && i - r.first < 128;
   }
+  if (!join) {
+    Run fresh;
+    fresh.first = i;
+    fresh.vmax = kInf;
+    fresh.vJunction = s.vJunction;
+    fresh.ramp = Ramp{kInf, 0};
+    fresh.exitCap = kInf;
+    runs_.push_back(fresh);
+  }
+  Run& r = runs_.back();
+  r.last = i;
+  r.length += s.len;
+  r.stopAfter = s.stopAfter;
+  if (s.len <= 0) return;
+  if (r.realBlocks == 0) r.vJunction = std::min(r.vJunction, s.vJunction);
+  ++r.realBlocks;
+  r.vmax = std::min(r.vmax, s.vmax);
+  r.ramp.a = std::min(r.ramp.a, s.ramp.a);
+  if (s.ramp.j > 0) r.ramp.j = r.ramp.j > 0 ? std::min(r.ramp.j, s.ramp.j) : s.ramp.j;
+  if (!capped) return;
+  // Look-ahead depth: at the end of block i the control must be able to stop within the
+  // look-ahead - 1 blocks it has read after it. That caps the run's speed; with nothing read
+  // ahead (look-ahead 1) it stops there.
+  double window = held_[i + look_ - 1].cum - s.cum;
+  if (window <= 0) {
+    r.exitCap = 0;
+    return;
+  }
+  if (slowestValid_) {
+    // Most blocks stop in time at their feed even on the slowest axis: no exact test.
+    if (r.vmax != boundV_) boundV_ = r.vmax, boundD_ = rampDistance(0, r.vmax, slowest_);
+    if (boundD_ <= window) return;
+  }
+  if (rampDistance(0, r.vmax, s.ramp) > window)
+    r.vmax = std::min(r.vmax, reachable(0, window, s.ramp));
 }
 
 void TimingStage::plan(bool toStop) {
   size_t n = held_.size();
   if (n == 0) return;
-  size_t look = static_cast<size_t>(std::max(1, t_.lookaheadBlocks));
-  buildRuns(look);
+  // The blocks whose window is not read yet go into provisional runs (without a cap); the
+  // last final run may grow by them, so it is restored afterwards.
+  size_t finalRuns = runs_.size();
+  Run lastFinal;
+  if (finalRuns > 0) lastFinal = runs_.back();
+  size_t groupedBefore = grouped_;
+  while (grouped_ < n) group(false);
   size_t m = runs_.size();
   // Without a stop in sight, forward only the runs that end before the last look-ahead
   // window: their speeds no longer depend on blocks not read yet.
   size_t commitRuns = m;
   if (!toStop) {
     commitRuns = 0;
-    while (commitRuns < m && runs_[commitRuns].last + look < n) ++commitRuns;
-    if (commitRuns == 0) return;
-  }
-  vEntryMax_.assign(m, 0.0);
-  vExitMax_.assign(m, 0.0);
-  vExitMax_[m - 1] = 0;  // a stop (or, for a partial plan, the end of what is known)
-  for (size_t i = m; i-- > 0;) {
-    Run& r = runs_[i];
-    vExitMax_[i] = std::min(vExitMax_[i], r.exitCap);
-    if (r.stopAfter) vExitMax_[i] = 0;
-    double vmax = std::isinf(r.vmax) ? vExitMax_[i] : r.vmax;
-    double entry = std::min({vmax, r.vJunction, reachable(vExitMax_[i], r.length, r.ramp)});
-    vEntryMax_[i] = entry;
-    if (i > 0) vExitMax_[i - 1] = std::min(entry, runs_[i - 1].vmax);
+    while (commitRuns < m && runs_[commitRuns].last + look_ < n) ++commitRuns;
   }
   double v = entry_;
-  for (size_t i = 0; i < m; ++i) {
-    Run& r = runs_[i];
-    r.vEntry = i == 0 ? entry_ : std::min(v, vEntryMax_[i]);
-    r.vExit = std::min(vExitMax_[i], reachable(r.vEntry, r.length, r.ramp));
-    if (r.length <= 0) r.vExit = std::min(r.vEntry, vExitMax_[i]);
-    v = r.vExit;
+  if (commitRuns > 0) {
+    // Backward pass from the end of what is read (a stop there), as far as a limit changes:
+    // a run that can no longer change and gets the same exit limit as in an earlier pass
+    // keeps its entry limit, and so does every run before it.
+    for (size_t i = m; i-- > 0;) {
+      Run& r = runs_[i];
+      double exitMax = i + 1 == m ? 0.0 : std::min(runs_[i + 1].vEntryMax, r.vmax);
+      exitMax = std::min(exitMax, r.exitCap);
+      if (r.stopAfter) exitMax = 0;
+      bool fixed = i + 1 < finalRuns;
+      if (fixed && r.planned && exitMax == r.vExitMax) break;
+      double vmax = std::isinf(r.vmax) ? exitMax : r.vmax;
+      r.vExitMax = exitMax;
+      r.vEntryMax = std::min({vmax, r.vJunction, reachable(exitMax, r.length, r.ramp)});
+      r.planned = fixed;
+    }
+    // Forward pass over the runs to send.
+    for (size_t i = 0; i < commitRuns; ++i) {
+      Run& r = runs_[i];
+      r.vEntry = i == 0 ? entry_ : std::min(v, r.vEntryMax);
+      r.vExit = r.length <= 0 ? std::min(r.vEntry, r.vExitMax)
+                              : std::min(r.vExitMax, reachable(r.vEntry, r.length, r.ramp));
+      v = r.vExit;
+      commit(r);
+    }
   }
-  for (size_t i = 0; i < commitRuns; ++i) commit(runs_[i]);
-  entry_ = toStop ? 0.0 : runs_[commitRuns - 1].vExit;
+  if (toStop) {
+    for (const Mark& mk : marks_) applyMark(mk);  // after the last held move
+    marks_.clear();
+    entry_ = 0;
+    runs_.clear();
+    grouped_ = 0;
+    if (next_) {
+      events_.clear();
+      after_.clear();
+    }
+    held_.clear();
+    heldBase_ += n;
+    haveDir_ = false;
+    return;
+  }
+  // Drop the provisional runs, restore the last final one.
+  runs_.resize(finalRuns);
+  if (finalRuns > 0) runs_.back() = lastFinal;
+  grouped_ = groupedBefore;
+  if (commitRuns == 0) return;
+  entry_ = v;  // the exit speed of the last run sent
+  // Every run sent is final (its blocks' windows are read), so it is among runs_[0, finalRuns).
   size_t done = runs_[commitRuns - 1].last + 1;
   auto doneDiff = static_cast<std::ptrdiff_t>(done);
   held_.erase(held_.begin(), held_.begin() + doneDiff);
+  runs_.erase(runs_.begin(), runs_.begin() + static_cast<std::ptrdiff_t>(commitRuns));
+  for (Run& r : runs_) r.first -= done, r.last -= done;
+  grouped_ -= done;
   if (next_) {
     events_.erase(events_.begin(), events_.begin() + doneDiff);
     size_t sent = 0;
@@ -303,24 +394,35 @@ void TimingStage::plan(bool toStop) {
     after_.erase(after_.begin(), after_.begin() + static_cast<std::ptrdiff_t>(sent));
   }
   heldBase_ += done;
-  if (toStop) haveDir_ = false;
 }
 
 void TimingStage::commit(const Run& run) {
   timing::Profile prof = timing::makeProfile(
       run.vEntry, run.vExit, std::isinf(run.vmax) ? 0.0 : run.vmax, run.length, run.ramp);
-  double s = 0, before = 0;
+  double s = 0, before = 0, model = 0, simple = 0, length = 0;
   // The G96 events to send after the moves of this run (sorted by their move).
   size_t sp = 0;
   while (next_ && sp < after_.size() && after_[sp].seq < heldBase_ + run.first) ++sp;
+  uint64_t count = 0;
   for (size_t i = run.first; i <= run.last; ++i) {
+    if (!marks_.empty() && marks_.front().seq == heldBase_ + i) [[unlikely]] {
+      // An operation starts here: the moves so far go to the one before.
+      report_.addCutting(model, simple, length, count);
+      model = simple = length = 0, count = 0;
+      while (!marks_.empty() && marks_.front().seq == heldBase_ + i) {
+        applyMark(marks_.front());
+        marks_.erase(marks_.begin());
+      }
+    }
+    ++count;
     const Held& h = held_[i];
-    s += h.s.length;
+    s += h.len;
     double at = i == run.last ? prof.total() : prof.timeAt(s);
     double time = std::max(at - before, tMin_);
     before = at;
     if (i == run.last && run.stopAfter) time += t_.inPositionS;
-    report_.addMoveTime(h.mode, h.at, h.length, time, h.timeSimple);
+    report_.addLineTime(h.at, time, h.timeSimple);
+    model += time, simple += h.timeSimple, length += h.length;
     if (!next_) continue;
     MoveEvent& e = events_[i];
     e.time = time;
@@ -328,6 +430,13 @@ void TimingStage::commit(const Run& run) {
     for (; sp < after_.size() && after_[sp].seq == heldBase_ + i; ++sp)
       next_->onSpindle(after_[sp].e);
   }
+  // The run's blocks are all cutting moves of the current operation: one sum for them.
+  report_.addCutting(model, simple, length, count);
+}
+
+void TimingStage::applyMark(const Mark& m) {
+  report_.commentSeen(m.text, m.at);
+  if (next_) next_->onComment(CommentEvent{m.at, m.text});
 }
 
 // ---- events --------------------------------------------------------------------------------
@@ -357,34 +466,23 @@ void TimingStage::onMove(const MoveEvent& in) {
     events_.push_back(in);
     events_.back().timeSimple = in.time;
   }
-  held_.push_back(Held{{}, in.at, in.length, in.time, in.mode});
-  Held& h = held_.back();
-  AxisArray dirIn{}, dirOut{};
-  h.s = segmentFor(in, dirIn, dirOut);
-  if (h.s.length > 0) {
-    if (!haveDir_) {
-      h.s.vJunction = held_.size() == 1 && entry_ == 0 ? 0.0 : kInf;
-    } else {
-      // Automatic corner deceleration: no axis may change its speed by more than 1783.
-      double v = kInf;
-      for (size_t k = 0; k < kMaxAxes; ++k) {
-        double du = std::fabs(dirIn[k] - lastDir_[k]);
-        if (du > 1e-9) v = std::min(v, cornerDiff_[k] / du);
-      }
-      h.s.vJunction = v;
-    }
-    lastDir_ = dirOut;
-    haveDir_ = true;
-  }
+  double cum = held_.empty() ? 0.0 : held_.back().cum;
+  Held& h = held_.emplace_back();
+  h.at = in.at;
+  h.length = in.length;
+  h.timeSimple = in.time;
+  setSegment(in, h);
+  h.cum = cum + h.len;
+  if (h.len > 0) setJunction(h);
   if (in.surfaceSpeed > 0 && in.perRev <= 0 && (dir_ == SpindleDir::Cw || dir_ == SpindleDir::Ccw))
     followSpindle(cssTarget(in.end[0], in), in.time);
-  h.s.stopAfter = in.exactStop;
+  h.stopAfter = in.exactStop;
   if (in.exactStop) {
     stop();
     return;
   }
-  size_t look = static_cast<size_t>(std::max(1, t_.lookaheadBlocks));
-  if (held_.size() >= 4 * look + 64) plan(false);
+  if (held_.size() > grouped_ + look_) group(true);
+  if (held_.size() >= trigger_) plan(false);
 }
 
 void TimingStage::finish() {
@@ -459,6 +557,19 @@ void TimingStage::onAux(const AuxEvent& e) {
 void TimingStage::onOffset(const OffsetEvent& e) {
   stop();
   if (next_) next_->onOffset(e);
+}
+
+void TimingStage::onComment(const CommentEvent& e) {
+  if (!t_.operationComments) {
+    if (next_) next_->onComment(e);
+    return;
+  }
+  if (held_.empty()) {
+    report_.commentSeen(e.text, e.at);
+    if (next_) next_->onComment(e);
+    return;
+  }
+  marks_.push_back(Mark{heldBase_ + held_.size(), e.at, std::string(e.text)});
 }
 
 void TimingStage::onSkip(const SkipEvent& e) {

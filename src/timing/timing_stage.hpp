@@ -12,6 +12,7 @@
 // difference (1783), the arc feed clamp (1730-1732), a look-ahead of N blocks, the block
 // processing time, exact stop (G09, G61); dwell in seconds or revolutions; M, S and T
 // function times, the spindle ramps and G96 following X with the spindle acceleration.
+#include <string>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -43,33 +44,35 @@ class TimingStage final : public EventSink {
   void onAux(const AuxEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
-
-  // One cutting block as the planner sees it (mm, s).
-  struct Segment {
-    double length = 0;       // 0: a block without motion, transparent to the planner
-    double vmax = 0;         // feed after clamps (arc, block time, override)
-    timing::Ramp ramp;       // path acceleration and jerk from the axes' limits
-    double vJunction = 0;    // limit at the start (corner with the previous block)
-    bool stopAfter = false;  // exact stop at the end
-    // Results.
-    double vEntry = 0, vExit = 0, time = 0;
-  };
+  void onComment(const CommentEvent& e) override;
 
  private:
-  // A held cutting move: what the planner and the report need, about 200 bytes (the event
-  // itself, about 650, is kept in events_ only when a sink follows).
+  // A held cutting block: what the planner and the report need (mm, s), about 100 bytes (the
+  // event itself, about 650, is kept in events_ only when a sink follows).
   struct Held {
-    Segment s;
+    double len = 0;        // mm; 0: a block without motion, transparent to the planner
+    double vmax = 0;       // feed after clamps (arc, block time, override)
+    timing::Ramp ramp;     // path acceleration and jerk from the axes' limits
+    double vJunction = 0;  // limit at the start (corner with the previous block)
+    double cum = 0;        // mm from the start of the stretch held since the last stop
     EventOrigin at;
-    double length = 0;      // program units, for the report
-    double timeSimple = 0;  // length / feed
-    MoveMode mode = MoveMode::Linear;
+    double length = 0;       // program units, for the report
+    double timeSimple = 0;   // length / feed
+    bool stopAfter = false;  // exact stop at the end
   };
   // A G96 rpm event the control sent after the held move number seq (heldBase_ counts).
   struct After {
     size_t seq = 0;
     SpindleEvent e;
   };
+  // A comment that starts an operation before the held move number seq: the moves before it
+  // belong to the operation before (the comment does not stop the look-ahead).
+  struct Mark {
+    size_t seq = 0;
+    EventOrigin at;
+    std::string text;
+  };
+  void applyMark(const Mark& m);
   // A stretch of held blocks planned as one profile: the joints inside it do not limit the
   // speed, so the acceleration carries on across them (as it does on the control).
   struct Run {
@@ -77,14 +80,23 @@ class TimingStage final : public EventSink {
     double length = 0, vmax = 0, vJunction = 0;
     timing::Ramp ramp;
     bool stopAfter = false;
-    double exitCap = 0;  // look-ahead depth: the speed from which it can stop in what is read
-    double vEntry = 0, vExit = 0;
+    double exitCap = 0;     // look-ahead depth: 0 when nothing is read after the run's end
+    size_t realBlocks = 0;  // blocks with motion
+    // Backward pass: the highest exit and entry speeds from which the control can still stop
+    // where it must; `planned` when they were computed for a run that can no longer change.
+    double vExitMax = 0, vEntryMax = 0;
+    bool planned = false;
+    double vEntry = 0, vExit = 0;  // forward pass
   };
   void stop() { plan(true); }
   void plan(bool toStop);
-  void buildRuns(size_t look);
+  // Adds held_[grouped_] to the runs; capped: the look-ahead window after it is known.
+  void group(bool capped);
   void commit(const Run& run);
-  Segment segmentFor(const MoveEvent& e, AxisArray& dirIn, AxisArray& dirOut);
+  void setSegment(const MoveEvent& e, Held& h);
+  template <size_t N>
+  void segment(const MoveEvent& e, Held& h);
+  void setJunction(Held& h);
   void forwardMove(const MoveEvent& e) {
     if (next_) next_->onMove(e);
   }
@@ -100,19 +112,32 @@ class TimingStage final : public EventSink {
   std::vector<Held> held_;         // a vector reused as a queue: no allocation per move
   std::vector<MoveEvent> events_;  // held_'s events, in step with it, when next_ is set
   std::vector<After> after_;
+  std::vector<Mark> marks_;
   size_t heldBase_ = 0;  // sequence number of held_.front()
   double entry_ = 0;     // velocity at the start of held_.front()
-  AxisArray lastDir_{};
+  // Unit tangents of the newest block at its start and end, and at the end of the one before.
+  AxisArray tanIn_{}, tanOut_{}, lastDir_{};
   bool haveDir_ = false;
   // Axis data, mm (deg for rotary axes).
   AxisArray scaleMm_{}, scaleInch_{};
   AxisArray accel_{}, jerk_{}, cornerDiff_{};
+  // Every axis with the same limits (the usual setup): the path limits follow from the
+  // largest direction component alone, one division instead of one per axis.
+  bool uniform_ = false;
+  bool threeAxes_ = false;  // no A, B, C axis: they never move
+  // The slowest ramp of any axis: no block stops in a longer distance than with it, so the
+  // look-ahead cap needs its exact test only where this bound exceeds the window.
+  timing::Ramp slowest_;
+  bool slowestValid_ = false;
+  double boundV_ = -1, boundD_ = 0;  // the last bound computed (the feed rarely changes)
   double tMin_ = 0;
+  size_t look_ = 1;     // look-ahead depth in blocks
+  size_t trigger_ = 0;  // plan when this many blocks are held
   // Spindle model.
   double rpm_ = 0;
   SpindleDir dir_ = SpindleDir::Stop;
-  std::vector<double> lengths_, vEntryMax_, vExitMax_;
-  std::vector<Run> runs_;
+  std::vector<Run> runs_;  // runs of held_[0, grouped_), oldest first
+  size_t grouped_ = 0;     // held_[0, grouped_) are in runs_ (their look-ahead cap is known)
 };
 
 }  // namespace ncvm

@@ -24,6 +24,13 @@ grep -qE '^B is [0-9.]+ s \([0-9.]+%\) (slower|faster) than A$' "$tmp/out" || fa
   fail "compare --json exit $?"
 grep -q '"full_retracts": -3' "$tmp/out" || fail "json difference of full retracts"
 
+# Operations by comment, side by side (the golden test's program against itself).
+ops="$src/tests/golden/timing/operations_by_comment"
+"$ncvm" compare "$ops.nc" "$ops.nc" --setup "$ops.toml" >"$tmp/out" || fail "operations compare exit $?"
+grep -qE '^  op 1 T1 ROUGH FACE, s +3\.550 +3\.550 ' "$tmp/out" || fail "operation 1 row"
+grep -qE '^  op 2 T1 FINISH PASS, s +0\.550 +0\.550 ' "$tmp/out" || fail "operation 2 row"
+grep -qE '^  op 3 T2 DRILL, s +4\.000 +4\.000 ' "$tmp/out" || fail "operation 3 row"
+
 # Without a setup the simple model is compared (no modelled row).
 "$ncvm" compare "$ex/g83-mill.nc" "$ex/o9503-mill.nc" >"$tmp/out" || fail "simple compare exit $?"
 grep -q 'modelled' "$tmp/out" && fail "simple compare shows a modelled time"

@@ -251,3 +251,35 @@ TEST(TimingSetupKeys, ParseAndReject) {
   EXPECT_THROW(applySetting(s, "timing.no_such_key=1"), SetupError);
   EXPECT_THROW(applySetting(s, "timing.lookahead_blocks=2.5"), SetupError);
 }
+
+TEST(TimingStage, OperationsByComment) {
+  // Each comment alone on its line starts an operation; the look-ahead runs through it (the
+  // two 50 mm blocks are one 100 mm move: 0.55 s each). The title after O names nothing.
+  ncvm::Setup s = dynamicSetup({"timing.tool_change_time=3", "timing.m_code_time=0"});
+  std::string prog =
+      "O1 (TITLE)\n(ROUGH)\nT1 M06\nG90 G21 G94 G01 X50. F6000.\n( FINISH )\nX100.\nT2 M06\n"
+      "G01 X0\nM30\n";
+  auto r = run(prog, s);
+  const auto& ops = r.timing->operations();
+  ASSERT_EQ(ops.size(), 3u);
+  EXPECT_EQ(ops[0].label, "ROUGH");
+  EXPECT_EQ(ops[1].label, "FINISH");  // trimmed
+  EXPECT_EQ(ops[2].label, "");        // the tool change after moves starts an unnamed one
+  EXPECT_EQ(ops[2].tool, 2);
+  EXPECT_NEAR(ops[0].time.model, 3 + 0.55, 1e-12);
+  EXPECT_NEAR(ops[1].time.model, 0.55, 1e-12);
+  EXPECT_NEAR(ops[2].time.model, 3 + 1.1, 1e-12);
+  EXPECT_EQ(r.state["timing"]["operations"][1]["start"]["line"], 5);
+  EXPECT_TRUE(r.state["timing"]["operations"][2]["label"].is_null());
+  // Off: operations by tool change only, the same total.
+  ncvm::Setup off = s;
+  applySetting(off, "timing.operation_comments=false");
+  auto o = run(prog, off);
+  ASSERT_EQ(o.timing->operations().size(), 2u);
+  EXPECT_NEAR(o.timing->operations()[0].time.model, 3 + 1.1, 1e-12);
+  EXPECT_NEAR(total(o), total(r), 1e-12);
+  // The simple model splits the same way, with length / feed.
+  auto simple = run(prog, defaultSetup());
+  ASSERT_EQ(simple.timing->operations().size(), 3u);
+  EXPECT_NEAR(simple.timing->operations()[1].time.model, 0.5, 1e-12);
+}
