@@ -20,6 +20,15 @@
 
 extern char** environ;
 
+// GCC says __SANITIZE_ADDRESS__ under -fsanitize=address; clang 14 only answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define NCVM_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define NCVM_UNDER_ASAN 1
+#endif
+#endif
+
 namespace ncvm::server {
 
 namespace {
@@ -148,7 +157,7 @@ std::string workerAnswer(const std::string& input) {
 }
 
 int workerMain(uint64_t memoryBytes) {
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(NCVM_UNDER_ASAN)
   // (AddressSanitizer reserves terabytes of address space: no cap under it.)
   if (memoryBytes > 0) {
     rlimit r{memoryBytes, memoryBytes};
