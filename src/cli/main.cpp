@@ -430,6 +430,7 @@ int serveCommand(const ServeOptions& o) {
     (void)loadSetup(o.setupPath);  // a bad setup stops here, not at the first run
     c.setupText = readText(o.setupPath);
     c.setupName = fs::path(o.setupPath).filename().string();
+    c.setupDir = fs::canonical(o.setupPath).parent_path().string();
   }
   std::error_code ec;
   c.workerExe = fs::read_symlink("/proc/self/exe", ec).string();

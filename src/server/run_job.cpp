@@ -1,9 +1,13 @@
 #include "server/run_job.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
+#include <vector>
 
 #include "app/session.hpp"
 #include "exec/executor.hpp"
+#include "server/safe_path.hpp"
 #include "server/step_recorder.hpp"
 
 namespace ncvm::server {
@@ -30,6 +34,33 @@ RunCaps capsFrom(const nlohmann::json& j) {
   return c;
 }
 
+// The files a setup names (target.polyline, target.height_map) are read only inside the
+// folders the server vouches for: a path relative to one of them and staying inside it.
+// A request's setup comes from a web page, so "/etc/passwd" or "../../x" would otherwise
+// make the worker open any file the server can read.
+void confineSetupFiles(Setup& setup, const nlohmann::json& request) {
+  std::vector<std::string> folders;
+  auto it = request.find("setup_dir");
+  if (it == request.end()) it = request.find("libs");
+  if (it != request.end() && it->is_string()) folders.push_back(it->get<std::string>());
+  if (it != request.end() && it->is_array())
+    for (const auto& d : *it)
+      if (d.is_string()) folders.push_back(d.get<std::string>());
+  for (auto [file, name] : {std::pair{&setup.target.polyline, "target.polyline"},
+                            std::pair{&setup.target.heightMap, "target.height_map"}}) {
+    if (file->empty()) continue;
+    std::optional<std::filesystem::path> inside;
+    for (const auto& dir : folders)
+      if ((inside = resolveInside(dir, *file))) break;
+    if (!inside)
+      throw SetupError(std::string(name) + ": \"" + *file +
+                           "\" is not a file of the program's folder (the server reads files "
+                           "only inside its folders, by a path relative to the program)",
+                       name, setup.target.line);
+    *file = inside->string();
+  }
+}
+
 nlohmann::json failure(const std::string& message) {
   return {{"ok", false}, {"error", message}};
 }
@@ -52,6 +83,7 @@ nlohmann::json runJob(const nlohmann::json& request) {
     if (request.contains("setup") && request["setup"].is_string())
       setup = parseSetup(request["setup"].get_ref<const std::string&>(),
                          request.value("setup_name", "setup.toml"));
+    confineSetupFiles(setup, request);
     // The server's caps bound whatever the setup asks for.
     Limits& lim = setup.limits;
     lim.maxBlocks = std::min(lim.maxBlocks, caps.maxBlocks);

@@ -18,8 +18,10 @@ struct RunCaps {
 
 // The request (built by the server, never taken from a client as is):
 //   {"program": TEXT, "name": FILE NAME, "setup": TOML TEXT or null, "setup_name": NAME,
-//    "libs": [FOLDER...], "caps": {"max_program_bytes", "max_blocks", "max_sim_seconds",
-//    "max_trace_bytes"}}
+//    "libs": [FOLDER...], "setup_dir": FOLDER (the server's own --setup), "caps":
+//    {"max_program_bytes", "max_blocks", "max_sim_seconds", "max_trace_bytes"}}
+// Files named by the setup are read only inside "setup_dir", when given, else the "libs"
+// folders (relative to them).
 // The answer: {"ok": true, "state", "trace" (JSON Lines text), "steps", "check", "printed",
 // "machine": {"kind", "axes"}, "stock" (with a [stock] in the setup: the final stock,
 // docs/web-viewer.md)} or {"ok": false, "error": MESSAGE} for a setup or load error.

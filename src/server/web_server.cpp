@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
 
 namespace ncvm::server {
@@ -37,35 +38,6 @@ const char* contentType(const fs::path& p) {
   return "application/octet-stream";
 }
 
-bool isLoopback(const std::string& addr) {
-  return addr == "127.0.0.1" || addr == "localhost" || addr == "::1" || addr.rfind("127.", 0) == 0;
-}
-
-// "localhost:8765", "127.0.0.1", "[::1]:8765" -> the host part.
-std::string hostPart(std::string h) {
-  if (!h.empty() && h.front() == '[') {
-    auto close = h.find(']');
-    return close == std::string::npos ? h : h.substr(1, close - 1);
-  }
-  auto colon = h.rfind(':');
-  return colon == std::string::npos ? h : h.substr(0, colon);
-}
-
-// The file name a client gave, reduced to its last component (it names the program in
-// alarms and the trace; it never opens a file).
-std::string baseName(const std::string& s) {
-  std::string b =
-      s.substr(s.find_last_of("/\\") == std::string::npos ? 0 : s.find_last_of("/\\") + 1);
-  if (b.empty() || b == "." || b == ".." || b.size() > 128) return "program.nc";
-  return b;
-}
-
-// A string field of a request, or `fallback` when it is missing or not a string.
-std::string field(const nlohmann::json& j, const char* key, const std::string& fallback) {
-  auto it = j.find(key);
-  return it != j.end() && it->is_string() ? it->get<std::string>() : fallback;
-}
-
 }  // namespace
 
 struct WebServer::Impl {
@@ -90,19 +62,12 @@ WebServer::WebServer(ServerConfig config)
 
   const bool loopbackOnly = isLoopback(c.bind);
   s.set_pre_routing_handler([loopbackOnly](const httplib::Request& req, httplib::Response& res) {
-    if (loopbackOnly) {
-      std::string host = req.get_header_value("Host");
-      std::string origin = req.get_header_value("Origin");
-      if (origin.rfind("http://", 0) == 0) origin = origin.substr(7);
-      if (!host.empty() && !isLoopback(hostPart(host))) {
-        sendError(res, 403, "this server answers only to loopback host names");
+    if (loopbackOnly)
+      if (auto refusal =
+              foreignHostOrOrigin(req.get_header_value("Host"), req.get_header_value("Origin"))) {
+        sendError(res, 403, *refusal);
         return httplib::Server::HandlerResponse::Handled;
       }
-      if (!origin.empty() && !isLoopback(hostPart(origin))) {
-        sendError(res, 403, "cross-origin requests are refused");
-        return httplib::Server::HandlerResponse::Handled;
-      }
-    }
     res.set_header("X-Content-Type-Options", "nosniff");
     res.set_header("Cache-Control", "no-store");
     return httplib::Server::HandlerResponse::Unhandled;
@@ -143,33 +108,9 @@ WebServer::WebServer(ServerConfig config)
 
   s.Post("/api/run", [this](const httplib::Request& req, httplib::Response& res) {
     const ServerConfig& cf = config_;
-    if (req.body.size() > cf.maxBodyBytes) return sendError(res, 413, "request too large");
-    nlohmann::json in = nlohmann::json::parse(req.body, nullptr, false);
-    if (in.is_discarded() || !in.is_object())
-      return sendError(res, 400, "the body must be a JSON object");
-    if (!in.contains("program") || !in["program"].is_string())
-      return sendError(res, 400, "\"program\" (the program text) is missing");
-    if (in["program"].get_ref<const std::string&>().size() > cf.caps.maxProgramBytes)
-      return sendError(res, 413, "program too large");
-    // The worker gets only what the server vouches for: the text, a plain name, a setup
-    // text and library folders resolved inside the roots.
-    nlohmann::json job{{"program", in["program"]},
-                       {"name", baseName(field(in, "name", "program.nc"))},
-                       {"caps", capsJson(cf.caps)},
-                       {"libs", nlohmann::json::array()}};
-    if (in.contains("setup") && in["setup"].is_string()) {
-      job["setup"] = in["setup"];
-      job["setup_name"] = baseName(field(in, "setup_name", "setup.toml"));
-    } else if (!cf.setupText.empty()) {
-      job["setup"] = cf.setupText;
-      job["setup_name"] = cf.setupName;
-    }
-    if (in.contains("root") && in["root"].is_string()) {
-      std::string dir = field(in, "dir", "");
-      auto folder = cf.catalog.folder(in["root"].get<std::string>(), dir);
-      if (!folder) return sendError(res, 400, "bad folder: not inside the server's folders");
-      job["libs"].push_back(folder->string());
-    }
+    RunRequest run = runRequestFromBody(req.body, cf);
+    if (run.status != 200) return sendError(res, run.status, run.error);
+    const nlohmann::json& job = run.job;
     WorkerResult w =
         runWorker(cf.workerExe, job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
                   cf.worker);

@@ -20,6 +20,15 @@
 
 extern char** environ;
 
+// GCC says __SANITIZE_ADDRESS__ under -fsanitize=address; clang 14 only answers __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define NCVM_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define NCVM_UNDER_ASAN 1
+#endif
+#endif
+
 namespace ncvm::server {
 
 namespace {
@@ -135,8 +144,20 @@ WorkerResult runWorker(const std::string& exe, const std::string& input,
   return res;
 }
 
+std::string workerAnswer(const std::string& input) {
+  nlohmann::json answer;
+  try {
+    answer = runJob(nlohmann::json::parse(input));
+  } catch (const nlohmann::json::exception& e) {
+    answer = {{"ok", false}, {"error", std::string("bad request: ") + e.what()}};
+  } catch (const std::bad_alloc&) {
+    answer = {{"ok", false}, {"error", "the run needed more memory than the server allows"}};
+  }
+  return answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 int workerMain(uint64_t memoryBytes) {
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(NCVM_UNDER_ASAN)
   // (AddressSanitizer reserves terabytes of address space: no cap under it.)
   if (memoryBytes > 0) {
     rlimit r{memoryBytes, memoryBytes};
@@ -146,15 +167,7 @@ int workerMain(uint64_t memoryBytes) {
   (void)memoryBytes;
 #endif
   std::string input((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
-  nlohmann::json answer;
-  try {
-    answer = runJob(nlohmann::json::parse(input));
-  } catch (const nlohmann::json::exception& e) {
-    answer = {{"ok", false}, {"error", std::string("bad request: ") + e.what()}};
-  } catch (const std::bad_alloc&) {
-    answer = {{"ok", false}, {"error", "the run needed more memory than the server allows"}};
-  }
-  std::string text = answer.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::string text = workerAnswer(input);
   std::fwrite(text.data(), 1, text.size(), stdout);
   return std::fflush(stdout) == 0 ? 0 : 1;
 }

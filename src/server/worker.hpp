@@ -24,6 +24,10 @@ struct WorkerResult {
 WorkerResult runWorker(const std::string& exe, const std::string& input,
                        const WorkerLimits& limits);
 
+// The child's answer (JSON text) to one request (JSON text): runJob, with a malformed request
+// or an exhausted memory cap answered as {"ok": false, "error"}.
+std::string workerAnswer(const std::string& request);
+
 // The child's side: reads the request from stdin, runs it (run_job.hpp), writes the answer.
 // `memoryBytes` caps its own address space first (0: no cap).
 int workerMain(uint64_t memoryBytes);

@@ -509,7 +509,9 @@ TEST(LatheG71TypeII, RandomShapesNeverGougeAndLeaveTheShape) {
     }
     // Mirrored in X (an ID shape, U negative) or in Z (cutting towards +Z): same moves,
     // mirrored.
-    for (auto [mx, mz] : {std::pair{-1.0, 1.0}, std::pair{1.0, -1.0}}) {
+    for (auto mirror : {std::pair{-1.0, 1.0}, std::pair{1.0, -1.0}}) {
+      // (clang 14 cannot capture structured bindings in a lambda.)
+      const double mx = mirror.first, mz = mirror.second;
       Contour m = c;
       auto flip = [&](const Pt& q) { return Pt{mx < 0 ? 40 - q.x : q.x, mz * q.z}; };
       m.start = flip(c.start);

@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "app/session.hpp"
+#include "server/request_checks.hpp"
 #include "server/run_job.hpp"
 #include "server/safe_path.hpp"
 #include "server/web_server.hpp"
@@ -71,6 +72,53 @@ TEST(SafePath, RefusesEverythingOutsideTheRoot) {
   EXPECT_FALSE(resolveInside(root.path, std::string("a/prog.nc\0x", 11)));
   EXPECT_FALSE(resolveInside(root.path, "a\\prog.nc"));
   EXPECT_FALSE(resolveInside(root.path, "a/missing.nc"));
+}
+
+// Found by fuzz_server: any name starting "127." passed as loopback, so a DNS name such as
+// 127.0.0.1.evil.example (which can point anywhere) could drive the server from a web page.
+TEST(RequestChecks, LoopbackNamesOnly) {
+  for (const char* host : {"localhost", "localhost:8765", "127.0.0.1", "127.0.0.1:8765",
+                           "127.1.2.3:80", "[::1]:8765", "[::1]"})
+    EXPECT_FALSE(foreignHostOrOrigin(host, "")) << host;
+  for (const char* host : {"127.evil.example", "127.0.0.1.evil.example:8765", "127.0.0.1.",
+                           "127.0.0.256", "127.0.0", "127..0.1", "1127.0.0.1", "128.0.0.1",
+                           "evil.example", "localhost.evil.example", "[::2]", "0127.0.0.1:1"})
+    EXPECT_TRUE(foreignHostOrOrigin(host, "")) << host;
+  EXPECT_FALSE(foreignHostOrOrigin("127.0.0.1:8765", "http://localhost:8765"));
+  EXPECT_TRUE(foreignHostOrOrigin("127.0.0.1:8765", "http://127.0.0.1.evil.example:8765"));
+  EXPECT_TRUE(foreignHostOrOrigin("127.0.0.1:8765", "http://127.evil.example"));
+}
+
+// Found while writing fuzz_server: a request's setup could name any file of the machine as
+// its target (target.polyline = "/etc/passwd"), and the worker opened it.
+TEST(RunJob, SetupFilesOnlyInsideTheProgramsFolder) {
+  TempDir dir, outside;
+  write(dir.path / "profile.csv", "# X Z\n40, 0\n40, -30\n");
+  write(outside.path / "secret.csv", "40, 0\n40, -30\n");
+  const std::string latheTarget =
+      "[machine]\nkind = \"lathe\"\n[tools.1]\ntype = \"insert\"\nnose_radius = 0.4\ntip = 3\n"
+      "[stock]\ndiameter = 50.0\nlength = 60.0\n[target]\npolyline = ";
+  const std::string prog = "O1\nT0101\nG00 X52. Z2.\nM30\n";
+  for (const std::string& bad : {(outside.path / "secret.csv").string(), std::string("/etc/passwd"),
+                                 "../" + outside.path.filename().string() + "/secret.csv"}) {
+    json r = runJob({{"program", prog},
+                     {"setup", latheTarget + "\"" + bad + "\"\n"},
+                     {"libs", {dir.path.string()}}});
+    ASSERT_FALSE(r["ok"].get<bool>()) << bad << ": " << r.dump();
+    EXPECT_NE(r["error"].get<std::string>().find("not a file of the program's folder"),
+              std::string::npos)
+        << r["error"];
+  }
+  // No folder at all (a program typed in the page): no file either.
+  json none = runJob({{"program", prog}, {"setup", latheTarget + "\"profile.csv\"\n"}});
+  EXPECT_FALSE(none["ok"].get<bool>()) << none.dump();
+  // A file of the program's folder, named relative to it, is read.
+  json good = runJob({{"program", prog},
+                      {"setup", latheTarget + "\"profile.csv\"\n"},
+                      {"libs", {dir.path.string()}}});
+  ASSERT_TRUE(good["ok"].get<bool>()) << good.dump();
+  EXPECT_EQ(good["state"]["stock"]["target"]["source"],
+            "polyline " + fs::canonical(dir.path / "profile.csv").string());
 }
 
 TEST(RunJob, TraceAndStepsLineForLine) {
@@ -285,6 +333,9 @@ TEST_F(ServerTest, MalformedAndOversizedRequests) {
 TEST_F(ServerTest, RefusesForeignHostAndOrigin) {
   httplib::Client c = client();
   auto r = c.Get("/api/info", {{"Host", "evil.example:80"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 403);
+  r = c.Get("/api/info", {{"Host", "127.0.0.1.evil.example:80"}});
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 403);
   r = c.Post("/api/run", {{"Origin", "http://evil.example"}}, json{{"program", "O1\nM30\n"}}.dump(),

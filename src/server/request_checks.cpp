@@ -1,0 +1,103 @@
+#include "server/request_checks.hpp"
+
+#include <cctype>
+
+namespace ncvm::server {
+
+namespace {
+
+// "127.0.0.1": four decimal numbers 0-255, the first 127.
+bool isLoopbackIpv4(const std::string& h) {
+  int parts = 0;
+  size_t i = 0;
+  int first = -1;
+  while (i <= h.size()) {
+    size_t start = i;
+    int value = 0;
+    while (i < h.size() && std::isdigit(static_cast<unsigned char>(h[i])) && i - start < 3)
+      value = value * 10 + (h[i++] - '0');
+    if (i == start || value > 255) return false;
+    if (first < 0) first = value;
+    ++parts;
+    if (i == h.size()) break;
+    if (h[i] != '.' || parts == 4) return false;
+    ++i;
+  }
+  return parts == 4 && first == 127;
+}
+
+// A string field of a request, or `fallback` when it is missing or not a string.
+std::string field(const nlohmann::json& j, const char* key, const std::string& fallback) {
+  auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : fallback;
+}
+
+RunRequest refuse(int status, std::string message) {
+  return {status, std::move(message), {}};
+}
+
+}  // namespace
+
+bool isLoopback(const std::string& host) {
+  return host == "localhost" || host == "::1" || isLoopbackIpv4(host);
+}
+
+std::string hostPart(const std::string& h) {
+  if (!h.empty() && h.front() == '[') {
+    auto close = h.find(']');
+    return close == std::string::npos ? h : h.substr(1, close - 1);
+  }
+  auto colon = h.rfind(':');
+  return colon == std::string::npos ? h : h.substr(0, colon);
+}
+
+std::optional<std::string> foreignHostOrOrigin(const std::string& host,
+                                               const std::string& originHeader) {
+  std::string origin = originHeader;
+  if (origin.rfind("http://", 0) == 0) origin = origin.substr(7);
+  if (!host.empty() && !isLoopback(hostPart(host)))
+    return "this server answers only to loopback host names";
+  if (!origin.empty() && !isLoopback(hostPart(origin))) return "cross-origin requests are refused";
+  return std::nullopt;
+}
+
+std::string baseName(const std::string& s) {
+  size_t slash = s.find_last_of("/\\");
+  std::string b = s.substr(slash == std::string::npos ? 0 : slash + 1);
+  if (b.empty() || b == "." || b == ".." || b.size() > 128) return "program.nc";
+  return b;
+}
+
+RunRequest runRequestFromBody(const std::string& body, const ServerConfig& cf) {
+  if (body.size() > cf.maxBodyBytes) return refuse(413, "request too large");
+  nlohmann::json in = nlohmann::json::parse(body, nullptr, false);
+  if (in.is_discarded() || !in.is_object()) return refuse(400, "the body must be a JSON object");
+  if (!in.contains("program") || !in["program"].is_string())
+    return refuse(400, "\"program\" (the program text) is missing");
+  if (in["program"].get_ref<const std::string&>().size() > cf.caps.maxProgramBytes)
+    return refuse(413, "program too large");
+  // The worker gets only what the server vouches for: the text, a plain name, a setup
+  // text and library folders resolved inside the roots.
+  RunRequest r;
+  nlohmann::json& job = r.job;
+  job = {{"program", in["program"]},
+         {"name", baseName(field(in, "name", "program.nc"))},
+         {"caps", capsJson(cf.caps)},
+         {"libs", nlohmann::json::array()}};
+  if (in.contains("setup") && in["setup"].is_string()) {
+    job["setup"] = in["setup"];
+    job["setup_name"] = baseName(field(in, "setup_name", "setup.toml"));
+  } else if (!cf.setupText.empty()) {
+    job["setup"] = cf.setupText;
+    job["setup_name"] = cf.setupName;
+    if (!cf.setupDir.empty()) job["setup_dir"] = cf.setupDir;
+  }
+  if (in.contains("root") && in["root"].is_string()) {
+    auto folder = cf.catalog.folder(in["root"].get<std::string>(), field(in, "dir", ""));
+    if (!folder) return refuse(400, "bad folder: not inside the server's folders");
+    job["libs"].push_back(folder->string());
+  }
+  return r;
+}
+
+}  // namespace ncvm::server

@@ -1,0 +1,38 @@
+#pragma once
+// What the server decides from a request's bytes alone, before a file is read or a worker
+// started: whether its Host and Origin are loopback names, and the worker job a /api/run
+// body becomes. Kept apart from the HTTP plumbing so that tests and the fuzz target
+// (tests/fuzz/fuzz_server.cpp) call them without a socket.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "server/web_server.hpp"
+
+namespace ncvm::server {
+
+// "localhost", "::1" or an IPv4 literal 127.a.b.c: names that can only mean this machine.
+// "127.evil.example" is none of them: a DNS name can point anywhere.
+bool isLoopback(const std::string& host);
+
+// "localhost:8765", "127.0.0.1", "[::1]:8765" -> the host part.
+std::string hostPart(const std::string& hostHeader);
+
+// Why a request with these Host and Origin headers is refused (the 403 text), or nullopt.
+// Empty headers pass (a client that sends none is not a browser driven from elsewhere).
+std::optional<std::string> foreignHostOrOrigin(const std::string& host, const std::string& origin);
+
+// The file name a client gave, reduced to its last component (it names the program in
+// alarms and the trace; it never opens a file).
+std::string baseName(const std::string& name);
+
+// A /api/run body turned into the worker's request (run_job.hpp), or the HTTP status and
+// message it is refused with.
+struct RunRequest {
+  int status = 200;    // 200: `job` is ready for runWorker
+  std::string error;   // otherwise: why
+  nlohmann::json job;  // program, name, caps, libs, setup, setup_name
+};
+RunRequest runRequestFromBody(const std::string& body, const ServerConfig& config);
+
+}  // namespace ncvm::server
