@@ -48,6 +48,7 @@ struct MoveEvent {
   int pathPoints = 0;
   std::array<AxisArray, kMaxAxes> path{};
   bool thread = false;  // G32/G33 and threading cycles: synchronised with the spindle
+  bool skip = false;    // the G31 measuring move (it may touch; any other probe move must not)
   // Cutter compensation: end is the tool centre; programmedEnd is the programmed point.
   bool compensated = false;
   AxisArray programmedEnd{};

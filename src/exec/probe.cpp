@@ -62,6 +62,7 @@ void Executor::skipMove(const Words& w) {
   }
   e.length = std::sqrt(sq);
   e.time = feed > 0 ? e.length / feed * 60.0 : 0.0;
+  e.skip = true;
   emitMove(e, fromM, toM);
   machine_ = toM;
 

@@ -88,6 +88,9 @@ MillStock::MillStock(const Setup& setup) : setup_(setup) {
 void MillStock::select(int t) {
   if (sim_->tool() && t == current_) return;  // T1 M06 with T1 already in: nothing new
   current_ = t;
+  probeRadius_ = 0;
+  if (auto s = setup_.tools.find(t); s != setup_.tools.end() && s->second.type == "probe")
+    probeRadius_ = (setup_.probe.ballDiameter > 0 ? setup_.probe.ballDiameter : s->second.diameter) / 2;
   auto it = tools_.find(t);
   const MillTool* tool = it == tools_.end() ? nullptr : &it->second;
   sim_->setTool(tool);
@@ -130,6 +133,7 @@ void MillStock::onMove(const MoveEvent& e) {
   ++moves_;
   if (moves_ == 1 && !sim_->tool() && selected_ < 0)
     notes_.push_back("moves before the first T word remove nothing (no tool)");
+  if (probeRadius_ > 0 && !e.skip) checkProbeMove(e);
   if (!sim_->tool()) return;
   const bool rapid = e.mode == MoveMode::Rapid;
   uint32_t t = tag(e);
@@ -185,6 +189,23 @@ void MillStock::arc(const MoveEvent& e, uint32_t t) {
   }
 }
 
+// A probe driven into the stock other than by G31 is the classic probe crash: reported as a
+// collision of kind "probe" with the distance the move went on past the first contact of the
+// (slightly smaller) test ball. Arcs are checked along their chord (probe moves are straight).
+void MillStock::checkProbeMove(const MoveEvent& e) {
+  const Vec3 a{e.start[0], e.start[1], e.start[2]}, b{e.end[0], e.end[1], e.end[2]};
+  const double length = std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  if (length <= 0) return;
+  // Touching is not a crash: after a G31 the ball sits on the surface, and it may slide up a
+  // wall it touched. Only going deeper than half a cell (the walls' accuracy) plus the
+  // tolerance counts, so the test ball is that much smaller.
+  const double r = std::max(probeRadius_ - (0.5 * cell_ + tol_), 0.1 * probeRadius_);
+  std::optional<double> t = heightFieldFirstContact(sim_->field(), a, b, r);
+  // A move that starts in the material was reported when it went in (or left by a G31).
+  if (!t || *t == 0) return;
+  probeHits_.push_back({tag(e), (1.0 - *t) * length});
+}
+
 std::optional<double> MillStock::Probe::firstContact(const Vec3& a, const Vec3& b, double r) const {
   return heightFieldFirstContact(owner_.sim_->field(), a, b, r);
 }
@@ -220,6 +241,14 @@ nlohmann::json MillStock::analysis(const std::string& outDir) {
                           {"line", o.line},
                           {"n", o.n},
                           {"amount", depth}});
+  }
+  for (const ProbeHit& h : probeHits_) {
+    const EventOrigin& o = origins_[h.tag];
+    collisions.push_back({{"kind", "probe"},
+                          {"program", o.programName ? *o.programName : std::string()},
+                          {"line", o.line},
+                          {"n", o.n},
+                          {"amount", h.amount}});
   }
   j["collisions"] = collisions;
   j["tools"] = toolsUsed_;

@@ -54,6 +54,13 @@ class MillStock final : public StockModel {
   std::optional<MillTarget> target_;
   int selected_ = -1;  // last T word
   int current_ = -1;   // tool in the spindle
+  double probeRadius_ = 0;  // > 0 while a probe is in the spindle (its ball radius)
+  struct ProbeHit {
+    uint32_t tag;
+    double amount;  // how far the move went on past the first contact
+  };
+  std::vector<ProbeHit> probeHits_;  // probe moves other than G31 that ran into the stock
+  void checkProbeMove(const MoveEvent& e);
   bool changed_ = false;
   nlohmann::json toolsUsed_ = nlohmann::json::array();
   std::vector<std::string> notes_;
