@@ -395,12 +395,15 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
       const auto* arr = std::get_if<std::vector<double>>(&v);
       if (!arr || arr->size() != 2) bad(w, "expected [U, W] (U as a diameter)");
       tg.shift = {(*arr)[0], (*arr)[1]};
+    } else if (rest == "reachable") {
+      tg.reachable = asString(v, w);
+      if (tg.reachable != "sharp" && tg.reachable != "nose") bad(w, "expected \"sharp\" or \"nose\"");
     } else if (rest == "face_z") tg.faceZ = asNumber(v, w);
     else if (rest == "height_map") tg.heightMap = asString(v, w);
     else if (rest == "tolerance") {
       tg.tolerance = asNumber(v, w);
       if (!(tg.tolerance > 0)) bad(w, "must be positive");
-    } else bad(w, "target keys: blocks polyline shift (lathe); face_z height_map (mill); tolerance");
+    } else bad(w, "target keys: blocks polyline shift reachable (lathe); face_z height_map (mill); tolerance");
     return;
   }
   bad(w, "unknown key");

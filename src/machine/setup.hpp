@@ -84,6 +84,9 @@ struct TargetSpec {
   int fromN = -1, toN = -1;
   std::string polyline;
   std::array<double, 2> shift{};
+  // Lathe: "sharp" compares with the contour itself; "nose" with the part the insert can
+  // make, the contour's concave corners rounded by the tool's nose radius.
+  std::string reachable = "sharp";
   // Mill: a flat floor at faceZ, or a height-map file.
   std::optional<double> faceZ;
   std::string heightMap;

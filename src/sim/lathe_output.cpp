@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <numbers>
 
 #include "report/atomic_file.hpp"
 #include "report/png_writer.hpp"
@@ -98,9 +99,74 @@ std::string svgPath(const ClipperLib::Paths& paths, double sign) {
 
 }  // namespace
 
-std::vector<LatheStock::Sample> LatheStock::measure(const ClipperLib::Paths& final) const {
+double LatheStock::targetNoseRadius() const {
+  return setup_.target.polyline.empty() && noseTarget_ >= 0 ? noseTarget_ : noseMax_;
+}
+
+std::vector<LatheStock::Sample> LatheStock::measureReachable(const ClipperLib::Paths& final,
+                                                             ReachablePart& reach) const {
+  std::vector<Sample> out;
+  Pt shift{setup_.target.shift[0] / 2, setup_.target.shift[1]};
+  std::vector<Pt> chain;
+  for (const auto& s : target_) {
+    Pt a{s.a.r + shift.r, s.a.z + shift.z}, b{s.b.r + shift.r, s.b.z + shift.z};
+    if (chain.empty() || std::hypot(chain.back().r - a.r, chain.back().z - a.z) > 0)
+      chain.push_back(a);
+    chain.push_back(b);
+  }
+  auto I = [](double v) { return static_cast<ClipperLib::cInt>(std::llround(v * kScale)); };
+  ClipperLib::Path raw{
+      {I(zBack_), I(rIn_)}, {I(zFront_), I(rIn_)}, {I(zFront_), I(rOut_)}, {I(zBack_), I(rOut_)}};
+  double r = targetNoseRadius();
+  // A fillet piece smaller than 1% of a right-angle corner's is rounding, not a corner.
+  double minCorner = std::max(tol_ * tol_, 0.01 * r * r * (1 - std::numbers::pi / 4));
+  reach = reachablePart(chain, final, raw, r, chord_ * kScale, minCorner, kScale);
+  if (!reach.found) return out;
+  // Samples along the reachable boundary where it follows the contour (within r of it; the
+  // rest is the raw stock's own outline), each tagged with the nearest contour block.
+  double total = 0;
+  for (const auto& s : target_) total += std::hypot(s.b.r - s.a.r, s.b.z - s.a.z);
+  double h = std::max(tol_ / 2, total / 200000);
+  EdgeIndex index(final, std::max(tileWidth_, tol_ * 10));
+  auto nearest = [&](Pt p, int& n) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& s : target_) {
+      Edge e{{s.a.r + shift.r, s.a.z + shift.z}, {s.b.r + shift.r, s.b.z + shift.z}};
+      double dz = e.b.z - e.a.z, dr = e.b.r - e.a.r, L2 = dz * dz + dr * dr;
+      double t =
+          L2 > 0 ? std::clamp(((p.z - e.a.z) * dz + (p.r - e.a.r) * dr) / L2, 0.0, 1.0) : 0.0;
+      double d = std::hypot(p.z - e.a.z - t * dz, p.r - e.a.r - t * dr);
+      if (d < best) best = d, n = s.n;
+    }
+    return best;
+  };
+  for (const auto& path : reach.part)
+    for (size_t k = 0; k < path.size(); ++k) {
+      Pt a{static_cast<double>(path[k].Y) / kScale, static_cast<double>(path[k].X) / kScale};
+      const auto& q = path[(k + 1) % path.size()];
+      Pt b{static_cast<double>(q.Y) / kScale, static_cast<double>(q.X) / kScale};
+      double L = std::hypot(b.r - a.r, b.z - a.z);
+      int m = std::max(1, static_cast<int>(std::ceil(L / h)));
+      for (int j = 0; j < m; ++j) {
+        double t = (j + 0.5) / m;
+        Pt p{a.r + (b.r - a.r) * t, a.z + (b.z - a.z) * t};
+        int n = -1;
+        if (nearest(p, n) > r + tol_) continue;
+        double d = index.distance(p);
+        out.push_back({p, index.inside(p) ? d : -d, n});
+      }
+    }
+  return out;
+}
+
+std::vector<LatheStock::Sample> LatheStock::measure(const ClipperLib::Paths& final,
+                                                    ReachablePart* reach) const {
   std::vector<Sample> out;
   if (target_.empty()) return out;
+  if (reach && setup_.target.reachable == "nose") {
+    out = measureReachable(final, *reach);
+    if (reach->found) return out;
+  }
   double total = 0;
   for (const auto& s : target_) total += std::hypot(s.b.r - s.a.r, s.b.z - s.a.z);
   double h = std::max(tol_ / 2, total / 200000);
@@ -127,7 +193,8 @@ std::vector<LatheStock::Sample> LatheStock::measure(const ClipperLib::Paths& fin
 
 nlohmann::json LatheStock::finish(const std::string& outDir) {
   ClipperLib::Paths final = profile();
-  std::vector<Sample> samples = measure(final);
+  ReachablePart reach;
+  std::vector<Sample> samples = measure(final, &reach);
   nlohmann::json a;
   a["kind"] = "lathe";
   a["units"] = unit_ < 1 ? "inch" : "mm";
@@ -142,6 +209,7 @@ nlohmann::json LatheStock::finish(const std::string& outDir) {
   a["collisions"] = collisions_;
   a["tools"] = tools_;
   a["notes"] = notes_;
+  a["unreachable"] = nullptr;  // reachable = "nose" only
   if (setup_.target.present) {
     double total = 0;
     for (const auto& s : target_) total += std::hypot(s.b.r - s.a.r, s.b.z - s.a.z);
@@ -166,6 +234,16 @@ nlohmann::json LatheStock::finish(const std::string& outDir) {
     a["deviation"]["at_max_excess"] = where(excess);
     a["deviation"]["at_max_gouge"] = where(gouge);
     if (target_.empty()) a["notes"].push_back("target: no feed move of the block range ran");
+    a["target"]["reachable"] = setup_.target.reachable;
+    if (setup_.target.reachable == "nose") {
+      a["target"]["nose_radius"] = targetNoseRadius();
+      if (reach.found)
+        a["unreachable"] = {{"area", reach.unreachableArea}, {"corners", reach.corners}};
+      else if (!target_.empty())
+        a["notes"].push_back(
+            "target: reachable = \"nose\": the contour does not part the raw stock into part "
+            "and cut-away air; measured against the sharp contour");
+    }
   } else {
     a["target"] = nullptr;
     a["deviation"] = nullptr;

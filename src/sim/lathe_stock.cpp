@@ -192,6 +192,8 @@ void LatheStock::onTool(const ToolEvent& e) {
   toolKnown_ = true;
   // A touch probe touches (G31, probe.use_stock); it does not cut.
   cuts_ = spec.type != "probe";
+  noseNow_ = cuts_ ? spec.noseRadius : 0;
+  if (cuts_) noseMax_ = std::max(noseMax_, spec.noseRadius);
   if (!cuts_)
     notes_.push_back(fmt::format("T{}: a probe does not cut: its moves remove nothing", e.tool));
   tools_.push_back({{"t", e.tool},
@@ -457,6 +459,7 @@ void LatheStock::captureTarget(const MoveEvent& e, const std::vector<Pt>& pts) {
     return;
   }
   capturing_ = true;
+  if (noseTarget_ < 0) noseTarget_ = noseNow_;
   targetProgram_ = e.at.programName;
   if (e.mode == MoveMode::Rapid) return;
   if (!e.compensated) {

@@ -11,6 +11,7 @@
 
 #include "sim/deviation.hpp"
 #include "sim/lathe_insert.hpp"
+#include "sim/lathe_reachable.hpp"
 #include "sim/stock_model.hpp"
 
 namespace ncvm {
@@ -68,7 +69,10 @@ class LatheStock final : public StockModel {
   void cutMove(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
   void captureTarget(const MoveEvent& e, const std::vector<lsim::Pt>& pts);
   void loadTargetFile();
-  std::vector<Sample> measure(const ClipperLib::Paths& final) const;
+  // reach: filled for [target] reachable = "nose" (the samples then lie on its boundary).
+  std::vector<Sample> measure(const ClipperLib::Paths& final, ReachablePart* reach) const;
+  std::vector<Sample> measureReachable(const ClipperLib::Paths& final, ReachablePart& reach) const;
+  double targetNoseRadius() const;
   nlohmann::json writeOutputs(const std::string& dir, const ClipperLib::Paths& final,
                               const std::vector<Sample>& samples, nlohmann::json& analysis) const;
 
@@ -98,6 +102,9 @@ class LatheStock final : public StockModel {
   std::vector<std::string> notes_;
   bool toolKnown_ = false;
   bool cuts_ = true;  // false while a probe is in the turret
+  // Nose radii for reachable = "nose": the tool's as the target blocks ran (-1: not yet), and
+  // the largest of the cutting tools (for a polyline target).
+  double noseNow_ = 0, noseTarget_ = -1, noseMax_ = 0;
   // Statistics.
   uint64_t moves_ = 0, cuttingMoves_ = 0;
   double removed_ = 0;
