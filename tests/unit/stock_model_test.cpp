@@ -206,7 +206,9 @@ TEST(LatheInsert, SweepAlongAPathIsTheUnionOfItsSegmentsSweeps) {
 
 TEST(LatheStock, BatchedFeedMovesCutWhatSingleMovesCut) {
   auto path = wavyPath(0.05, 1500, 24.5);
-  LatheStock batched(latheBar(50, 100)), single(latheBar(50, 100));
+  // LatheStock keeps a reference to its setup: the setups must outlive it.
+  const ncvm::Setup barA = latheBar(50, 100), barB = latheBar(50, 100);
+  LatheStock batched(barA), single(barB);
   batched.selectTool(roundInsert(0.4, 3));
   single.selectTool(roundInsert(0.4, 3));
   MoveEvent e;
