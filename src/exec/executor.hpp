@@ -262,6 +262,7 @@ class Executor {
   void dwell(const Words& w);
   void referenceReturn(const Words& w, int which);
   void referencePositionCheck(const Words& w);
+  int64_t referenceNm(size_t axis, int which) const;
   void returnFromReference(const Words& w);
   void machinePositioning(const Words& w);
   void advanceTime(double seconds);

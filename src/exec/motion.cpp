@@ -462,14 +462,19 @@ void Executor::referenceReturn(const Words& w, int which) {
   if (toM != machine_) rapidMachine(toM, mask);  // no leg when already at the intermediate point
   for (size_t k = 0; k < kMaxAxes; ++k) {
     if (!(mask & (1u << k))) continue;
-    const AxisConfig& a = setup_.axes[k];
-    // Reference positions are fixed machine points, in mm whatever G20/G21 says.
-    double ref = a.reference[static_cast<size_t>(which - 1)];
-    int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
-    toM[k] = a.diameter ? nm / 2 : nm;
+    toM[k] = referenceNm(k, which);
   }
   if (toM != machine_) rapidMachine(toM, mask);
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+}
+
+// Reference point `which` (1-4) of axis k as a machine position in nm (radius on a diameter
+// axis). Reference positions are fixed machine points, in mm whatever G20/G21 says.
+int64_t Executor::referenceNm(size_t k, int which) const {
+  const AxisConfig& a = setup_.axes[k];
+  const double ref = a.reference[static_cast<size_t>(which - 1)];
+  const int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
+  return a.diameter ? nm / 2 : nm;
 }
 
 // G27: rapid to the commanded point (with the active offsets), then every commanded axis
@@ -486,8 +491,7 @@ void Executor::referencePositionCheck(const Words& w) {
   for (size_t k = 0; k < kMaxAxes; ++k) {
     if (!(mask & (1u << k))) continue;
     const AxisConfig& a = setup_.axes[k];
-    int64_t nm = roundToIncrements(a.reference[0], incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
-    if (a.diameter) nm /= 2;
+    const int64_t nm = referenceNm(k, 1);
     // The machine positions to its detection unit (the metric increment): an inch command
     // 3.937 in = 99.9998 mm reaches a 100.000 mm reference.
     if (std::llabs(machine_[k] - nm) * 2 >= nmPerIncMm_[k])
