@@ -26,7 +26,8 @@ double surface(double x, double y) {
   return -3 + 2 * std::sin(x / 10) * std::cos(y / 15);
 }
 
-// A raster finishing path: lines along X, `segment` mm moves following the surface.
+// A raster finishing path: lines along X, `segment` mm moves following the surface. Along a
+// line each move starts where the one before ended, as the moves of a program do.
 std::vector<std::array<Point3, 2>> rasterPath(size_t moves, double segment) {
   std::vector<std::array<Point3, 2>> path;
   path.reserve(moves);
@@ -34,20 +35,29 @@ std::vector<std::array<Point3, 2>> rasterPath(size_t moves, double segment) {
   const double step = (kSide - 8) / (static_cast<double>(moves) / perLine + 1);
   for (size_t k = 0; path.size() < moves; ++k) {
     double y = 4 + step * static_cast<double>(k);
-    for (int s = 0; s < perLine && path.size() < moves; ++s) {
-      double x0 = 4 + s * segment, x1 = x0 + segment;
-      path.push_back({Point3{x0, y, surface(x0, y)}, Point3{x1, y, surface(x1, y)}});
+    Point3 from{4, y, surface(4, y)};
+    for (int s = 1; s <= perLine && path.size() < moves; ++s) {
+      double x = 4 + s * segment;
+      Point3 to{x, y, surface(x, y)};
+      path.push_back({from, to});
+      from = to;
     }
   }
   return path;
 }
 
+// The kernel on one core, each move told (as MillSim does) whether it continues the one
+// before; the stock is cut again on every iteration.
 void BM_MillBallShortSegments(benchmark::State& state) {
   const MillTool t = ball6();
   const auto path = rasterPath(20000, 0.25);
   HeightField f(0, 0, kCell, static_cast<int>(kSide / kCell), static_cast<int>(kSide / kCell), 0);
   for (auto _ : state)
-    for (const auto& m : path) benchmark::DoNotOptimize(sweepLine(f, t, m[0], m[1]));
+    for (size_t k = 0; k < path.size(); ++k) {
+      bool startCut = k > 0 && continuesFrom(path[k - 1][1], path[k][0]);
+      benchmark::DoNotOptimize(
+          sweepLine(f, t, path[k][0], path[k][1], {}, SweepMode::Cut, startCut));
+    }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * path.size()));
 }
 BENCHMARK(BM_MillBallShortSegments)->Unit(benchmark::kMillisecond);

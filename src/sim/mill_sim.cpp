@@ -18,6 +18,11 @@ MillSim::MillSim(HeightField field, int threads) : field_(std::move(field)) {
 void MillSim::push(const Op& op) {
   ++moves_;
   ops_.push_back(op);
+  // Every op cuts its tool at its end point, so the next one starting there may skip the
+  // cells where its start is lowest (sweepLine's startCut).
+  ops_.back().startCut = lastTool_ == op.tool && continuesFrom(lastEnd_, op.a);
+  lastTool_ = op.tool;
+  lastEnd_ = op.b;
   if (ops_.size() >= kBatch) flush();
 }
 
@@ -68,7 +73,7 @@ void MillSim::run(int index, std::vector<float>& pen) {
     if (!op.rapid && t.fluteLength > 0) pen[3 * k + 1] = part(t.radius, t.fluteLength);
     if (t.holderRadius > 0) pen[3 * k + 2] = part(t.holderRadius, t.holderZ);
     float cut = op.arc ? sweepArcXY(field_, t, op.cx, op.cy, op.radius, op.a0, op.sweep, op.a[2], s)
-                       : sweepLine(field_, t, op.a, op.b, s);
+                       : sweepLine(field_, t, op.a, op.b, s, SweepMode::Cut, op.startCut);
     pen[3 * k] = cut;
   }
 }

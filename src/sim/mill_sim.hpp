@@ -63,6 +63,7 @@ class MillSim {
     double cx, cy, radius, a0, sweep;  // arcs (radius > 0)
     uint32_t tag;
     bool rapid, arc;
+    bool startCut = false;  // continues the op before with the same tool (sweepLine)
   };
   void push(const Op& op);
   void run(int index, std::vector<float>& pen);
@@ -76,6 +77,8 @@ class MillSim {
   uint64_t moves_ = 0, cuttingMoves_ = 0;
   uint32_t lastCutTag_ = 0;
   bool anyCut_ = false;
+  const MillTool* lastTool_ = nullptr;  // the tool and end point of the last op queued
+  Point3 lastEnd_{};
 };
 
 }  // namespace ncvm

@@ -19,58 +19,104 @@ namespace {
 
 constexpr float kNone = 3.0e38f;  // "the tool does not reach": finite, for -ffinite-math-only
 
-// Clips `lo <= k*x + m <= hi` into [xlo, xhi]; false when no x fits.
-bool clipLinear(double k, double m, double lo, double hi, double& xlo, double& xhi) {
-  if (std::abs(k) < 1e-15) return m >= lo && m <= hi;
-  double p = (lo - m) / k, q = (hi - m) / k;
-  if (p > q) std::swap(p, q);
-  xlo = std::max(xlo, p);
-  xhi = std::min(xhi, q);
-  return xlo <= xhi;
-}
+constexpr double kKeepAll = -1e300;  // keepFrom for "keep every cell" (no infinities here)
 
-// The local x interval where the row at local y `ry` meets the stadium of radius r around
-// the segment (0,0)-(dx,dy): the discs at both ends and the band between them. The stadium
-// is convex, so the union is one interval.
-bool rowSpan(double ry, double dx, double dy, double r, double& lo, double& hi) {
-  lo = 1e300;  // no infinities: this file is built with -ffinite-math-only
-  hi = -lo;
-  auto disc = [&](double cx, double cy) {
-    double v = r * r - (ry - cy) * (ry - cy);
+// The rows of the stadium of radius r around the segment (0,0)-(dx,dy) in coordinates local
+// to its start: the discs at both ends and the band between them. Set up once per move so
+// each row costs two square roots and a few products.
+class StadiumRows {
+ public:
+  StadiumRows(double dx, double dy, double r, double keepFrom)
+      : dx_(dx), dy_(dy), r_(r), r2_(r * r), keepFrom_(keepFrom) {
+    len_ = std::sqrt(dx * dx + dy * dy);
+    if (len_ > 0) {
+      ux_ = dx / len_;
+      uy_ = dy / len_;
+      invUx_ = std::abs(ux_) > kTiny ? 1 / ux_ : 0;
+      invUy_ = std::abs(uy_) > kTiny ? 1 / uy_ : 0;
+    }
+  }
+
+  // The local x interval where the row at local y `ry` meets the stadium. The stadium is
+  // convex, so the union of its parts is one interval. Only the part whose distance along
+  // the segment (from its start, in the direction of travel) is at least keepFrom is kept:
+  // behind that line the tool at the start point is lowest, and that was cut already.
+  NCVM_INLINE bool span(double ry, double& lo, double& hi) const {
+    lo = 1e300;
+    hi = -lo;
+    disc(ry, 0, 0, lo, hi);
+    disc(ry, dx_, dy_, lo, hi);
+    if (len_ > 0) {
+      // Band: along = rx ux + ry uy in [0, len], across = ry ux - rx uy in [-r, r].
+      double bl = -1e300, bh = 1e300;
+      if (clip(ux_, invUx_, ry * uy_, 0, len_, bl, bh) &&
+          clip(-uy_, -invUy_, ry * ux_, -r_, r_, bl, bh)) {
+        lo = std::min(lo, bl);
+        hi = std::max(hi, bh);
+      }
+      if (keepFrom_ > kKeepAll) {
+        double m = ry * uy_;
+        if (ux_ > kTiny)
+          lo = std::max(lo, (keepFrom_ - m) * invUx_);
+        else if (ux_ < -kTiny)
+          hi = std::min(hi, (keepFrom_ - m) * invUx_);
+        else if (m < keepFrom_)
+          return false;
+      }
+    }
+    return lo <= hi;
+  }
+
+ private:
+  static constexpr double kTiny = 1e-12;
+  NCVM_INLINE void disc(double ry, double cx, double cy, double& lo, double& hi) const {
+    double v = r2_ - (ry - cy) * (ry - cy);
     if (v < 0) return;
     double w = std::sqrt(v);
     lo = std::min(lo, cx - w);
     hi = std::max(hi, cx + w);
-  };
-  disc(0, 0);
-  disc(dx, dy);
-  double len = std::hypot(dx, dy);
-  if (len > 0) {
-    double ux = dx / len, uy = dy / len;
-    double bl = -1e300, bh = 1e300;
-    if (clipLinear(ux, ry * uy, 0, len, bl, bh) && clipLinear(-uy, ry * ux, -r, r, bl, bh)) {
-      lo = std::min(lo, bl);
-      hi = std::max(hi, bh);
-    }
   }
-  return lo <= hi;
+  // Clips `lo <= k*x + m <= hi` (inv = 1/k, or 0 where k is tiny) into [xlo, xhi].
+  NCVM_INLINE static bool clip(double k, double inv, double m, double lo, double hi, double& xlo,
+                               double& xhi) {
+    if (inv == 0) return std::abs(k) <= kTiny && m >= lo && m <= hi;
+    double p = (lo - m) * inv, q = (hi - m) * inv;
+    if (p > q) std::swap(p, q);
+    xlo = std::max(xlo, p);
+    xhi = std::min(xhi, q);
+    return xlo <= xhi;
+  }
+  double dx_, dy_, r_, r2_, keepFrom_;
+  double len_ = 0, ux_ = 0, uy_ = 0, invUx_ = 0, invUy_ = 0;
+};
+
+// Cell range [lo, hi) of n cells of size 1/inv from `origin` whose centres lie within [a, b]
+// (HeightField::columnsWithin, inlined into the kernel with a product for the division).
+NCVM_INLINE void cellsWithin(double a, double b, double origin, double inv, int n, int& lo,
+                             int& hi) {
+  double l = std::ceil((a - origin) * inv - 0.5);
+  double h = std::floor((b - origin) * inv - 0.5) + 1;
+  lo = static_cast<int>(std::clamp(l, 0.0, static_cast<double>(n)));
+  hi = static_cast<int>(std::clamp(h, 0.0, static_cast<double>(n)));
 }
 
 // Runs `cell(rx, ry)` (local coordinates relative to the segment start; returns the tool's
 // lower envelope there, kNone where it does not reach) over the stadium's cells.
 template <SweepMode M, class CellFn>
 NCVM_INLINE float sweepStadium(HeightField& f, double ax, double ay, double dx, double dy, double r,
-                               Stripe stripe, CellFn cell) {
+                               double keepFrom, Stripe stripe, CellFn cell) {
   int jlo, jhi;
   f.rowsWithin(std::min(ay, ay + dy) - r, std::max(ay, ay + dy) + r, jlo, jhi);
   float pen = 0;
+  const StadiumRows rows(dx, dy, r, keepFrom);
   const auto step = static_cast<float>(f.cell());
+  const double inv = 1 / f.cell(), x0 = f.x0() - ax;
   for (int j = jlo; j < jhi; ++j) {
     if (!stripe.owns(j)) continue;
     double ry = f.cellY(j) - ay, lo, hi;
-    if (!rowSpan(ry, dx, dy, r, lo, hi)) continue;
+    if (!rows.span(ry, lo, hi)) continue;
     int ilo, ihi;
-    f.columnsWithin(ax + lo, ax + hi, ilo, ihi);
+    cellsWithin(lo, hi, x0, inv, f.nx(), ilo, ihi);
     if (ilo >= ihi) continue;
     float* z = f.row(j) + ilo;
     const auto rx0 = static_cast<float>(f.cellX(ilo) - ax);
@@ -110,13 +156,13 @@ struct DrillProfile {
 // Horizontal move (or a point): the envelope is z + h(distance to the segment in XY).
 template <SweepMode M, class Profile>
 NCVM_INLINE float horizontal(HeightField& f, double radius, const Point3& a, double dx, double dy,
-                             Stripe stripe, Profile h) {
+                             double keepFrom, Stripe stripe, Profile h) {
   const double l2 = dx * dx + dy * dy;
   const auto inv = static_cast<float>(l2 > 0 ? 1.0 / l2 : 0.0);
   const auto fdx = static_cast<float>(dx), fdy = static_cast<float>(dy);
   const auto r2 = static_cast<float>(radius * radius);
   const auto z0 = static_cast<float>(a[2]);
-  return sweepStadium<M>(f, a[0], a[1], dx, dy, radius, stripe, [=](float rx, float ry) {
+  return sweepStadium<M>(f, a[0], a[1], dx, dy, radius, keepFrom, stripe, [=](float rx, float ry) {
     float t = std::clamp((rx * fdx + ry * fdy) * inv, 0.0f, 1.0f);
     float ex = rx - t * fdx, ey = ry - t * fdy;
     float d2 = ex * ex + ey * ey;
@@ -126,10 +172,12 @@ NCVM_INLINE float horizontal(HeightField& f, double radius, const Point3& a, dou
 
 // Ball on a sloped move: the lower surface of the capsule of ball centres. Where the
 // nearest point lies inside the segment it is the cylinder around it (a quadratic in z),
-// otherwise one of the end spheres; the envelope is the lowest valid one.
-template <SweepMode M>
+// otherwise one of the end spheres; the envelope is the lowest valid one. StartCut: the
+// sphere at the start was cut already (the move continues an earlier one), so it cannot
+// lower any cell and is left out.
+template <SweepMode M, bool StartCut>
 NCVM_INLINE float ballSloped(HeightField& f, double radius, const Point3& a, const Point3& d,
-                             Stripe stripe) {
+                             double keepFrom, Stripe stripe) {
   const double lxy2 = d[0] * d[0] + d[1] * d[1], l2 = lxy2 + d[2] * d[2];
   const auto fdx = static_cast<float>(d[0]), fdy = static_cast<float>(d[1]);
   const auto fdz = static_cast<float>(d[2]);
@@ -137,27 +185,29 @@ NCVM_INLINE float ballSloped(HeightField& f, double radius, const Point3& a, con
   const auto invxy = static_cast<float>(1.0 / lxy2);
   const auto r = static_cast<float>(radius), r2 = r * r;
   const auto za = static_cast<float>(a[2] + radius), zb = static_cast<float>(a[2] + d[2] + radius);
-  return sweepStadium<M>(f, a[0], a[1], d[0], d[1], radius, stripe, [=](float rx, float ry) {
-    float s = rx * rx + ry * ry;
-    float p = rx * fdx + ry * fdy;
-    float bx = rx - fdx, by = ry - fdy;
-    float sb = bx * bx + by * by;
-    float zA = s <= r2 ? za - std::sqrt(std::max(r2 - s, 0.0f)) : kNone;
-    float zB = sb <= r2 ? zb - std::sqrt(std::max(r2 - sb, 0.0f)) : kNone;
-    // Cylinder: |w|^2 - (w.d)^2 / l2 = r^2 for w = (rx, ry, wz), lower root.
-    float q = p * p * fdz * fdz - (fdx * fdx + fdy * fdy) * (s * fl2 - p * p - r2 * fl2);
-    float wz = (p * fdz - std::sqrt(std::max(q, 0.0f))) * invxy;
-    float t = (p + wz * fdz) * inv;
-    float zC = (q >= 0 && t >= 0 && t <= 1) ? za + wz : kNone;
-    return std::min(zC, std::min(zA, zB));
-  });
+  return sweepStadium<M>(
+      f, a[0], a[1], d[0], d[1], radius, keepFrom, stripe, [=](float rx, float ry) {
+        float s = rx * rx + ry * ry;
+        float p = rx * fdx + ry * fdy;
+        float bx = rx - fdx, by = ry - fdy;
+        float sb = bx * bx + by * by;
+        float zA = kNone;
+        if constexpr (!StartCut) zA = s <= r2 ? za - std::sqrt(std::max(r2 - s, 0.0f)) : kNone;
+        float zB = sb <= r2 ? zb - std::sqrt(std::max(r2 - sb, 0.0f)) : kNone;
+        // Cylinder: |w|^2 - (w.d)^2 / l2 = r^2 for w = (rx, ry, wz), lower root.
+        float q = p * p * fdz * fdz - (fdx * fdx + fdy * fdy) * (s * fl2 - p * p - r2 * fl2);
+        float wz = (p * fdz - std::sqrt(std::max(q, 0.0f))) * invxy;
+        float t = (p + wz * fdz) * inv;
+        float zC = (q >= 0 && t >= 0 && t <= 1) ? za + wz : kNone;
+        return std::min(zC, std::min(zA, zB));
+      });
 }
 
 // Flat end mill on a sloped move: the bottom disc is lowest at one end of the interval of
 // positions where it covers the cell.
 template <SweepMode M>
 NCVM_INLINE float flatSloped(HeightField& f, double radius, const Point3& a, const Point3& d,
-                             Stripe stripe) {
+                             double keepFrom, Stripe stripe) {
   const double lxy2 = d[0] * d[0] + d[1] * d[1];
   const auto fdx = static_cast<float>(d[0]), fdy = static_cast<float>(d[1]);
   const auto fdz = static_cast<float>(d[2]);
@@ -165,23 +215,24 @@ NCVM_INLINE float flatSloped(HeightField& f, double radius, const Point3& a, con
   const auto r2 = static_cast<float>(radius * radius);
   const auto z0 = static_cast<float>(a[2]);
   const bool rising = d[2] > 0;
-  return sweepStadium<M>(f, a[0], a[1], d[0], d[1], radius, stripe, [=](float rx, float ry) {
-    float s = rx * rx + ry * ry;
-    float p = rx * fdx + ry * fdy;
-    float disc = p * p - fl * (s - r2);
-    float root = std::sqrt(std::max(disc, 0.0f));
-    float t1 = (p - root) * invxy, t2 = (p + root) * invxy;
-    float t = rising ? std::max(t1, 0.0f) : std::min(t2, 1.0f);
-    bool hit = disc >= 0 && t1 <= 1 && t2 >= 0;
-    return hit ? z0 + t * fdz : kNone;
-  });
+  return sweepStadium<M>(f, a[0], a[1], d[0], d[1], radius, keepFrom, stripe,
+                         [=](float rx, float ry) {
+                           float s = rx * rx + ry * ry;
+                           float p = rx * fdx + ry * fdy;
+                           float disc = p * p - fl * (s - r2);
+                           float root = std::sqrt(std::max(disc, 0.0f));
+                           float t1 = (p - root) * invxy, t2 = (p + root) * invxy;
+                           float t = rising ? std::max(t1, 0.0f) : std::min(t2, 1.0f);
+                           bool hit = disc >= 0 && t1 <= 1 && t2 >= 0;
+                           return hit ? z0 + t * fdz : kNone;
+                         });
 }
 
 // Any profile on a sloped move: z(t) + h(|q - p(t)|) is convex in t (h convex and rising,
 // the distance convex), so bisection on its slope finds the minimum. Scalar, double.
 template <SweepMode M>
 float generalSloped(HeightField& f, const MillTool& tool, const Point3& a, const Point3& d,
-                    Stripe stripe) {
+                    double keepFrom, Stripe stripe) {
   const double lxy2 = d[0] * d[0] + d[1] * d[1], r = tool.radius;
   const double ax = a[0], ay = a[1];
   auto slope = [&](double qx, double qy, double t) {
@@ -195,7 +246,7 @@ float generalSloped(HeightField& f, const MillTool& tool, const Point3& a, const
     return d[2] + hp * dr;
   };
   // Cells come in as local float coordinates; the minimisation runs in double.
-  return sweepStadium<M>(f, ax, ay, d[0], d[1], r, stripe, [&](float rxf, float ryf) {
+  return sweepStadium<M>(f, ax, ay, d[0], d[1], r, keepFrom, stripe, [&](float rxf, float ryf) {
     double rx = rxf, ry = ryf, qx = ax + rx, qy = ay + ry;
     double s = rx * rx + ry * ry, p = rx * d[0] + ry * d[1];
     double disc = p * p - lxy2 * (s - r * r);
@@ -217,46 +268,65 @@ float generalSloped(HeightField& f, const MillTool& tool, const Point3& a, const
   });
 }
 
+// Where a move that continues from a point already cut may start cutting: the signed
+// distance along the move (in XY, from its start) behind which the tool at the start point
+// is its lowest. The envelope at a cell is min over t of z(t) + h(|q - p(t)|), convex in t.
+// Behind the start (along-track a <= 0) the distance only grows with t, so a rising or level
+// move is lowest at t = 0 for every such cell. A descending ball: h'(d) >= d / r, so the
+// slope at t = 0 is at least dz + L |a| / r (L the move's XY length), and it is lowest at
+// the start where |a| >= -dz r / L. Other profiles on a descending move: no such bound.
+double keepFromAfterCut(const MillTool& tool, double lxy, double dz) {
+  if (!(lxy > 0)) return kKeepAll;
+  if (dz >= 0) return 0;
+  if (tool.kind == MillToolKind::Ball) return dz * tool.radius / lxy;
+  return kKeepAll;
+}
+
 template <SweepMode M>
 NCVM_INLINE float lineImpl(HeightField& f, const MillTool& tool, const Point3& a0, const Point3& b0,
-                           Stripe stripe) {
+                           Stripe stripe, bool startCut) {
   Point3 a = a0, d{b0[0] - a0[0], b0[1] - a0[1], b0[2] - a0[2]};
   double lxy2 = d[0] * d[0] + d[1] * d[1];
   if (lxy2 < 1e-18) {  // a plunge or retract: the tool at its lowest point
     if (d[2] < 0) a = b0;
     d = {0, 0, 0};
+    lxy2 = 0;
   }
   const double r = tool.radius;
   const bool flatMove = std::abs(d[2]) <= 1e-9;
+  const double keepFrom =
+      startCut ? keepFromAfterCut(tool, std::sqrt(lxy2), flatMove ? 0.0 : d[2]) : kKeepAll;
   const auto fr = static_cast<float>(r);
   switch (tool.kind) {
     case MillToolKind::Flat:
-      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe, FlatProfile{})
-                      : flatSloped<M>(f, r, a, d, stripe);
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], keepFrom, stripe, FlatProfile{})
+                      : flatSloped<M>(f, r, a, d, keepFrom, stripe);
     case MillToolKind::Ball:
-      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe, BallProfile{fr, fr * fr})
-                      : ballSloped<M>(f, r, a, d, stripe);
+      if (flatMove)
+        return horizontal<M>(f, r, a, d[0], d[1], keepFrom, stripe, BallProfile{fr, fr * fr});
+      return startCut ? ballSloped<M, true>(f, r, a, d, keepFrom, stripe)
+                      : ballSloped<M, false>(f, r, a, d, keepFrom, stripe);
     case MillToolKind::Bull: {
       auto c = static_cast<float>(tool.corner);
       BullProfile h{static_cast<float>(r - tool.corner), c, c * c};
-      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe, h)
-                      : generalSloped<M>(f, tool, a, d, stripe);
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], keepFrom, stripe, h)
+                      : generalSloped<M>(f, tool, a, d, keepFrom, stripe);
     }
     case MillToolKind::Drill:
-      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], stripe,
+      return flatMove ? horizontal<M>(f, r, a, d[0], d[1], keepFrom, stripe,
                                       DrillProfile{static_cast<float>(tool.coneSlope)})
-                      : generalSloped<M>(f, tool, a, d, stripe);
+                      : generalSloped<M>(f, tool, a, d, keepFrom, stripe);
   }
   return 0;
 }
 
 NCVM_CLONES float cutLine(HeightField& f, const MillTool& tool, const Point3& a, const Point3& b,
-                          Stripe stripe) {
-  return lineImpl<SweepMode::Cut>(f, tool, a, b, stripe);
+                          Stripe stripe, bool startCut) {
+  return lineImpl<SweepMode::Cut>(f, tool, a, b, stripe, startCut);
 }
 NCVM_CLONES float measureLine(HeightField& f, const MillTool& tool, const Point3& a,
                               const Point3& b, Stripe stripe) {
-  return lineImpl<SweepMode::Measure>(f, tool, a, b, stripe);
+  return lineImpl<SweepMode::Measure>(f, tool, a, b, stripe, false);
 }
 
 // The smallest angle-aligned box around an arc.
@@ -322,8 +392,8 @@ float arcImpl(HeightField& f, const MillTool& tool, double cx, double cy, double
 }  // namespace
 
 float sweepLine(HeightField& f, const MillTool& tool, const Point3& a, const Point3& b,
-                Stripe stripe, SweepMode mode) {
-  return mode == SweepMode::Cut ? cutLine(f, tool, a, b, stripe)
+                Stripe stripe, SweepMode mode, bool startCut) {
+  return mode == SweepMode::Cut ? cutLine(f, tool, a, b, stripe, startCut)
                                 : measureLine(f, tool, a, b, stripe);
 }
 

@@ -24,9 +24,20 @@ struct Stripe {
 
 enum class SweepMode : bool { Cut, Measure };  // Measure: penetration only, field unchanged
 
-// Straight move of the tool tip from a to b.
+// Straight move of the tool tip from a to b. startCut: this tool standing at `a` was cut into
+// this field already (an earlier cut of the same tool passed through `a`, e.g. the move
+// before ended there). Heights only go down, so cells where the tool at `a` is the lowest
+// point of the move cannot change: the kernel skips them, about half of the footprint of a
+// short move. The result is the same as without the flag (to float rounding).
 float sweepLine(HeightField& f, const MillTool& tool, const Point3& a, const Point3& b,
-                Stripe stripe = {}, SweepMode mode = SweepMode::Cut);
+                Stripe stripe = {}, SweepMode mode = SweepMode::Cut, bool startCut = false);
+
+// Whether a move from `a` continues one that ended at `end` closely enough for startCut
+// (1 nm: far below a float height's resolution at these sizes).
+inline bool continuesFrom(const Point3& end, const Point3& a) {
+  auto near = [](double u, double v) { return u - v <= 1e-6 && v - u <= 1e-6; };
+  return near(end[0], a[0]) && near(end[1], a[1]) && near(end[2], a[2]);
+}
 
 // Circular move in the XY plane at constant Z: centre (cx, cy), from angle a0 through
 // `sweep` radians (positive counter-clockwise, |sweep| <= 2 pi), tip at height z.
