@@ -62,6 +62,27 @@ void BM_MillBallShortSegments(benchmark::State& state) {
 }
 BENCHMARK(BM_MillBallShortSegments)->Unit(benchmark::kMillisecond);
 
+// Arcs as CAM arc fitting writes them: 2 mm G02/G03 pieces of concentric circles (radius 5
+// to 50 mm) around the stock's centre, Ø6 ball at constant Z, one core.
+void BM_MillBallArcs(benchmark::State& state) {
+  const MillTool t = ball6();
+  struct Arc {
+    double radius, a0, sweep;
+  };
+  std::vector<Arc> arcs;
+  for (double ra = 5; arcs.size() < 5000; ra += 0.3) {
+    int n = static_cast<int>(std::ceil(2 * M_PI * ra / 2.0));
+    for (int k = 0; k < n && arcs.size() < 5000; ++k)
+      arcs.push_back({ra, 2 * M_PI * k / n, 2 * M_PI / n});
+  }
+  HeightField f(0, 0, kCell, static_cast<int>(kSide / kCell), static_cast<int>(kSide / kCell), 0);
+  for (auto _ : state)
+    for (const Arc& a : arcs)
+      benchmark::DoNotOptimize(sweepArcXY(f, t, kSide / 2, kSide / 2, a.radius, a.a0, a.sweep, -1));
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * arcs.size()));
+}
+BENCHMARK(BM_MillBallArcs)->Unit(benchmark::kMillisecond);
+
 // The plain kernel of the issue: every cell of the move's bounding box, double precision,
 // the envelope found by placing the ball at the cell's nearest point of the centre line.
 float plainBoxKernel(HeightField& f, double r, const Point3& a, const Point3& b) {

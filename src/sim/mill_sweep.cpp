@@ -349,44 +349,139 @@ void arcBox(double cx, double cy, double ra, double a0, double sweep, double box
   }
 }
 
-template <SweepMode M>
-float arcImpl(HeightField& f, const MillTool& tool, double cx, double cy, double ra, double a0,
-              double sweep, double z, Stripe stripe) {
+// One row of an arc's cells: `count` cells from local x `wx0` (step `step`) at local y `wy`,
+// local coordinates relative to the arc's mid point M (a point on the arc), m the unit
+// direction from the centre to M. The distance to the arc is |rho - ra| where the cell's
+// direction from the centre lies within the sweep, else the distance to the nearer end
+// point. Relative to M every term stays small, so float keeps the micrometres however far
+// the centre is: rho^2 - ra^2 = |w|^2 + 2 ra (w.m), and rho - ra = that / (rho + ra). The
+// sector test uses cross products with the start and end directions (no atan2), so the loop
+// is straight-line code the compiler vectorises.
+struct ArcFrame {
+  float ra, ra2, mx, my;         // radius, its square, direction to the mid point
+  float sx, sy, ex, ey, c0, c1;  // start/end directions; their cross products with M - C
+  float p0x, p0y, p1x, p1y;      // the end points relative to M
+  bool full, wide;               // a full circle; a sweep of more than half a turn
+};
+
+template <SweepMode M, class Profile>
+NCVM_INLINE float arcRow(float* z, int count, float wx0, float step, float wy, ArcFrame a,
+                         float zTip, float r2, Profile h) {
+  // By value and into locals: the stores to z cannot alias them, so the loop vectorises.
+  const float ra = a.ra, ra2 = a.ra2, mx = a.mx, my = a.my, sx = a.sx, sy = a.sy, ex = a.ex,
+              ey = a.ey, k0 = a.c0, k1 = a.c1, p0x = a.p0x, p0y = a.p0y, p1x = a.p1x, p1y = a.p1y;
+  const bool full = a.full, wide = a.wide;
+  float pen = 0;
+  for (int k = 0; k < count; ++k) {
+    float wx = wx0 + static_cast<float>(k) * step;
+    float num = wx * wx + wy * wy + 2 * ra * (wx * mx + wy * my);
+    float rho = std::sqrt(std::max(ra2 + num, 0.0f));
+    float dr = num / (rho + ra);
+    bool in0 = sx * wy - sy * wx + k0 >= 0, in1 = ex * wy - ey * wx + k1 <= 0;
+    bool inside = full | (wide ? (in0 | in1) : (in0 & in1));
+    float bx = wx - p0x, by = wy - p0y, ux = wx - p1x, uy = wy - p1y;
+    float ends = std::min(bx * bx + by * by, ux * ux + uy * uy);
+    float d2 = inside ? dr * dr : ends;
+    float zt = d2 <= r2 ? zTip + h(d2) : kNone;
+    float old = z[k], nz = std::min(old, zt);
+    pen = std::max(pen, old - nz);
+    if constexpr (M == SweepMode::Cut) z[k] = nz;
+  }
+  return pen;
+}
+
+template <SweepMode M, class Profile>
+NCVM_INLINE float arcKernel(HeightField& f, double r, double cx, double cy, double ra, double a0,
+                            double sweep, double z, Stripe stripe, Profile h) {
   // Work with a counter-clockwise sweep from `start`.
   double start = sweep >= 0 ? a0 : a0 + sweep, span = std::abs(sweep);
   double box[4];
   arcBox(cx, cy, ra, start, span, box);
-  const double r = tool.radius;
-  const double p0x = cx + ra * std::cos(start), p0y = cy + ra * std::sin(start);
-  const double p1x = cx + ra * std::cos(start + span), p1y = cy + ra * std::sin(start + span);
-  int jlo, jhi, ilo, ihi;
+  const double ro = ra + r, ri = ra - r, mid = start + span / 2;
+  const double mx = std::cos(mid), my = std::sin(mid), Mx = cx + ra * mx, My = cy + ra * my;
+  const double sx = std::cos(start), sy = std::sin(start);
+  const double ex = std::cos(start + span), ey = std::sin(start + span);
+  ArcFrame a;
+  a.ra = static_cast<float>(ra);
+  a.ra2 = static_cast<float>(ra * ra);
+  a.mx = static_cast<float>(mx);
+  a.my = static_cast<float>(my);
+  a.sx = static_cast<float>(sx);
+  a.sy = static_cast<float>(sy);
+  a.ex = static_cast<float>(ex);
+  a.ey = static_cast<float>(ey);
+  a.c0 = static_cast<float>(ra * (sx * my - sy * mx));
+  a.c1 = static_cast<float>(ra * (ex * my - ey * mx));
+  a.p0x = static_cast<float>(ra * (sx - mx));
+  a.p0y = static_cast<float>(ra * (sy - my));
+  a.p1x = static_cast<float>(ra * (ex - mx));
+  a.p1y = static_cast<float>(ra * (ey - my));
+  a.full = span >= 2 * M_PI - 1e-12;
+  a.wide = span > M_PI;
+  const auto zTip = static_cast<float>(z), r2 = static_cast<float>(r * r);
+  const auto step = static_cast<float>(f.cell());
+  int jlo, jhi;
   f.rowsWithin(box[2] - r, box[3] + r, jlo, jhi);
-  f.columnsWithin(box[0] - r, box[1] + r, ilo, ihi);
+  const double inv = 1 / f.cell(), x0 = f.x0() - cx;
   float pen = 0;
   for (int j = jlo; j < jhi; ++j) {
     if (!stripe.owns(j)) continue;
-    double qy = f.cellY(j);
-    float* row = f.row(j);
-    for (int i = ilo; i < ihi; ++i) {
-      double qx = f.cellX(i), vx = qx - cx, vy = qy - cy;
-      double rho = std::hypot(vx, vy);
-      if (rho > ra + r || rho < ra - r) continue;
-      double phi = std::atan2(vy, vx) - start;
-      phi -= 2 * M_PI * std::floor(phi / (2 * M_PI));
-      double dist;
-      if (phi <= span || span >= 2 * M_PI - 1e-12) {
-        dist = std::abs(rho - ra);
-      } else {
-        dist = std::min(std::hypot(qx - p0x, qy - p0y), std::hypot(qx - p1x, qy - p1y));
-      }
-      if (dist > r) continue;
-      auto zt = static_cast<float>(z + tool.profile(dist));
-      float old = row[i], nz = std::min(old, zt);
-      pen = std::max(pen, old - nz);
-      if constexpr (M == SweepMode::Cut) row[i] = nz;
+    const double vy = f.cellY(j) - cy;
+    // Cells of interest lie in the annulus ra - r <= rho <= ra + r (the end discs too) and
+    // in the arc's box grown by r: up to two intervals of the row.
+    double wo2 = ro * ro - vy * vy;
+    if (wo2 < 0) continue;
+    const double wo = std::sqrt(wo2);
+    const double lo = std::max(-wo, box[0] - r - cx), hi = std::min(wo, box[1] + r - cx);
+    const double wi = ri > std::abs(vy) ? std::sqrt(ri * ri - vy * vy) : -1;
+    const auto wy = static_cast<float>(f.cellY(j) - My);
+    // Up to two intervals (no lambda: it would not inherit the AVX2 clone's target).
+    double from[2] = {lo, std::max(lo, wi)}, to[2] = {hi, hi};
+    int parts = 1;
+    if (wi > 0) {
+      to[0] = std::min(hi, -wi);
+      parts = 2;
+    }
+    for (int part = 0; part < parts; ++part) {
+      int ilo, ihi;
+      cellsWithin(from[part], to[part], x0, inv, f.nx(), ilo, ihi);
+      if (ilo >= ihi) continue;
+      const auto wx0 = static_cast<float>(f.cellX(ilo) - Mx);
+      pen = std::max(pen, arcRow<M>(f.row(j) + ilo, ihi - ilo, wx0, step, wy, a, zTip, r2, h));
     }
   }
   return pen;
+}
+
+template <SweepMode M>
+NCVM_INLINE float arcImpl(HeightField& f, const MillTool& tool, double cx, double cy, double ra,
+                          double a0, double sweep, double z, Stripe stripe) {
+  const double r = tool.radius;
+  const auto fr = static_cast<float>(r);
+  switch (tool.kind) {
+    case MillToolKind::Flat:
+      return arcKernel<M>(f, r, cx, cy, ra, a0, sweep, z, stripe, FlatProfile{});
+    case MillToolKind::Ball:
+      return arcKernel<M>(f, r, cx, cy, ra, a0, sweep, z, stripe, BallProfile{fr, fr * fr});
+    case MillToolKind::Bull: {
+      auto c = static_cast<float>(tool.corner);
+      BullProfile h{static_cast<float>(r - tool.corner), c, c * c};
+      return arcKernel<M>(f, r, cx, cy, ra, a0, sweep, z, stripe, h);
+    }
+    case MillToolKind::Drill:
+      return arcKernel<M>(f, r, cx, cy, ra, a0, sweep, z, stripe,
+                          DrillProfile{static_cast<float>(tool.coneSlope)});
+  }
+  return 0;
+}
+
+NCVM_CLONES float cutArc(HeightField& f, const MillTool& tool, double cx, double cy, double ra,
+                         double a0, double sweep, double z, Stripe stripe) {
+  return arcImpl<SweepMode::Cut>(f, tool, cx, cy, ra, a0, sweep, z, stripe);
+}
+NCVM_CLONES float measureArc(HeightField& f, const MillTool& tool, double cx, double cy, double ra,
+                             double a0, double sweep, double z, Stripe stripe) {
+  return arcImpl<SweepMode::Measure>(f, tool, cx, cy, ra, a0, sweep, z, stripe);
 }
 
 }  // namespace
@@ -399,9 +494,8 @@ float sweepLine(HeightField& f, const MillTool& tool, const Point3& a, const Poi
 
 float sweepArcXY(HeightField& f, const MillTool& tool, double cx, double cy, double radius,
                  double a0, double sweep, double z, Stripe stripe, SweepMode mode) {
-  return mode == SweepMode::Cut
-             ? arcImpl<SweepMode::Cut>(f, tool, cx, cy, radius, a0, sweep, z, stripe)
-             : arcImpl<SweepMode::Measure>(f, tool, cx, cy, radius, a0, sweep, z, stripe);
+  return mode == SweepMode::Cut ? cutArc(f, tool, cx, cy, radius, a0, sweep, z, stripe)
+                                : measureArc(f, tool, cx, cy, radius, a0, sweep, z, stripe);
 }
 
 float holderPenetration(const HeightField& f, double r, double lift, const Point3& a,

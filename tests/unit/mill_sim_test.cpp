@@ -120,6 +120,44 @@ TEST(MillSweep, ArcMatchesAFineChainOfLines) {
   EXPECT_EQ(arc.at(210, 180), 5.0f);
 }
 
+// A large-radius arc (the centre 400 mm away, outside the stock): the kernel works relative
+// to a point on the arc, so floors stay exact and the ball's surface matches the chain.
+TEST(MillSweep, LargeRadiusArcKeepsMicrometres) {
+  const double cx = 20, cy = -390, ra = 400, a0 = M_PI / 2 + 0.03, sweep = -0.06;
+  MillTool ball = tool("ball", 6), flat = tool("flat", 6);
+  HeightField arc(0, 0, 0.05, 800, 400, 5.0f), chain = arc, floor = arc;
+  sweepArcXY(arc, ball, cx, cy, ra, a0, sweep, -0.5);
+  sweepArcXY(floor, flat, cx, cy, ra, a0, sweep, -1.234);
+  const int n = 2000;
+  for (int k = 0; k < n; ++k) {
+    double u0 = a0 + sweep * k / n, u1 = a0 + sweep * (k + 1) / n;
+    sweepLine(chain, ball, {cx + ra * std::cos(u0), cy + ra * std::sin(u0), -0.5},
+              {cx + ra * std::cos(u1), cy + ra * std::sin(u1), -0.5});
+  }
+  double worst = 0;
+  int floorCells = 0;
+  for (int j = 0; j < arc.ny(); ++j)
+    for (int i = 0; i < arc.nx(); ++i) {
+      worst = std::max(worst, double(std::abs(arc.at(i, j) - chain.at(i, j))));
+      double x = arc.cellX(i) - cx, y = arc.cellY(j) - cy;
+      double ang = std::atan2(y, x), dist = std::abs(std::hypot(x, y) - ra);
+      if (ang > a0 + sweep + 1e-3 && ang < a0 - 1e-3 && dist < 2.9) {
+        ASSERT_NEAR(floor.at(i, j), -1.234, 1e-6) << arc.cellX(i) << " " << arc.cellY(j);
+        ++floorCells;
+        // The ball's sphere in double: within a few float steps (a kernel in float relative
+        // to the far centre would be off by ~5e-5 here).
+        if (dist < 2.5) {
+          ASSERT_NEAR(arc.at(i, j), -0.5 + 3 - std::sqrt(9 - dist * dist), 3e-6);
+        }
+      }
+      if (dist > 3.01) {
+        ASSERT_EQ(floor.at(i, j), 5.0f);
+      }
+    }
+  EXPECT_GT(floorCells, 1000);
+  EXPECT_LT(worst, 1e-3);  // the chain's sagitta (24 m / 2000 pieces: 0.7 um) and float
+}
+
 // startCut is a promise that the tool at the start point was cut already: the kernel then
 // leaves out the cells where the start is the move's lowest point. On a fresh block those
 // cells stay uncut, which shows the skip happens and where.
