@@ -62,6 +62,38 @@ void BM_MillBallShortSegments(benchmark::State& state) {
 }
 BENCHMARK(BM_MillBallShortSegments)->Unit(benchmark::kMillisecond);
 
+// The same raster through MillSim on one core with the shank (20 mm flutes) and a Ø40 holder
+// 45 mm above the tip checked on every move, and a rapid at a safe height after every row:
+// what a setup that describes the whole tool costs.
+void BM_MillBallWithHolder(benchmark::State& state) {
+  ToolSpec spec;
+  spec.type = "ball";
+  spec.diameter = 6;
+  spec.fluteLength = 20;
+  spec.length = 80;
+  spec.holderLength = 35;
+  spec.holderDiameter = 40;
+  const MillTool t = millToolFromSpec(spec, 1);
+  const auto path = rasterPath(20000, 0.25);
+  const int n = static_cast<int>(kSide / kCell);
+  for (auto _ : state) {
+    MillSim sim(HeightField(0, 0, kCell, n, n, 0), 1);
+    sim.setTool(&t);
+    for (size_t k = 0; k < path.size(); ++k) {
+      if (k > 0 && !continuesFrom(path[k - 1][1], path[k][0])) {
+        Point3 up{path[k - 1][1][0], path[k - 1][1][1], 10}, over{path[k][0][0], path[k][0][1], 10};
+        sim.line(path[k - 1][1], up, true, 0);
+        sim.line(up, over, true, 0);
+        sim.line(over, path[k][0], true, 0);
+      }
+      sim.line(path[k][0], path[k][1], false, 0);
+    }
+    benchmark::DoNotOptimize(sim.contacts().size());
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * path.size()));
+}
+BENCHMARK(BM_MillBallWithHolder)->Unit(benchmark::kMillisecond);
+
 // Arcs as CAM arc fitting writes them: 2 mm G02/G03 pieces of concentric circles (radius 5
 // to 50 mm) around the stock's centre, Ø6 ball at constant Z, one core.
 void BM_MillBallArcs(benchmark::State& state) {

@@ -57,9 +57,14 @@ void MillSim::arcXY(double cx, double cy, double radius, double a0, double sweep
 // One thread's share of the batch: every op on this thread's stripes, in order.
 void MillSim::run(int index, std::vector<float>& pen) {
   Stripe s{index, threads_};
+  // No cell is above the block's top (cuts only lower it), so a tool, shank or holder whose
+  // lowest point stays at or above it touches nothing: air moves, rapids at a safe height and
+  // holders high over the part cost no cell visits.
+  const double top = field_.top();
   for (size_t k = 0; k < ops_.size(); ++k) {
     const Op& op = ops_[k];
     const MillTool& t = *op.tool;
+    const double lowest = std::min(op.a[2], op.b[2]);
     // Shank and holder against the stock as the move finds it (before it cuts). A rapid's
     // cutter contact is already a collision, so only feed moves check the shank.
     // Arcs: the flat-bottomed cylinder swept along the same arc, measured only.
@@ -70,8 +75,11 @@ void MillSim::run(int index, std::vector<float>& pen) {
       return sweepArcXY(field_, cyl, op.cx, op.cy, op.radius, op.a0, op.sweep, op.a[2] + lift, s,
                         SweepMode::Measure);
     };
-    if (!op.rapid && t.fluteLength > 0) pen[3 * k + 1] = part(t.radius, t.fluteLength);
-    if (t.holderRadius > 0) pen[3 * k + 2] = part(t.holderRadius, t.holderZ);
+    if (!op.rapid && t.fluteLength > 0 && lowest + t.fluteLength < top)
+      pen[3 * k + 1] = part(t.radius, t.fluteLength);
+    if (t.holderRadius > 0 && lowest + t.holderZ < top)
+      pen[3 * k + 2] = part(t.holderRadius, t.holderZ);
+    if (lowest >= top) continue;  // pen stays 0
     float cut = op.arc ? sweepArcXY(field_, t, op.cx, op.cy, op.radius, op.a0, op.sweep, op.a[2], s)
                        : sweepLine(field_, t, op.a, op.b, s, SweepMode::Cut, op.startCut);
     pen[3 * k] = cut;
