@@ -479,7 +479,10 @@ int64_t Executor::referenceNm(size_t k, int which) const {
 
 // G27: rapid to the commanded point (with the active offsets), then every commanded axis
 // must be at its first reference position; an axis that is not gives PS0092. Programs
-// cancel the offsets first, as the manuals advise, or the check fails by the offset.
+// cancel the offsets first, as the manuals advise, or the check fails by the offset. In
+// G41/G42 the compensation lookahead has ended before this block (nc_block.cpp) and the
+// tool keeps the vector it has at the end of the block before: it arrives shifted by it
+// (docs/fanuc-decisions.md), so with a cutter radius the check fails by the radius.
 void Executor::referencePositionCheck(const Words& w) {
   if (modal_.g[9] != 800) throw AlarmError(AlarmId::G27to30InCycle);
   std::array<int64_t, kMaxAxes> target{};
@@ -487,7 +490,16 @@ void Executor::referencePositionCheck(const Words& w) {
   if (!axisTargets(w, target, mask)) return;
   std::array<int64_t, kMaxAxes> here{};
   for (size_t k = 0; k < kMaxAxes; ++k) here[k] = machine_[k] - offset_[k];
+  const std::array<int64_t, kMaxAxes> commanded = target;
+  if (!lathe_ && modal_.g[7] != 400) {
+    const size_t u = modal_.plane == 18 ? 2 : modal_.plane == 19 ? 1 : 0;
+    const size_t v = modal_.plane == 18 ? 0 : modal_.plane == 19 ? 2 : 1;
+    for (size_t k : {u, v})
+      if (mask & (1u << k)) target[k] += here[k] - programmed_[k];
+  }
   if (target != here) moveTo(target, MoveMode::Rapid, mask);  // no zero-length leg, as G28
+  for (size_t k = 0; k < kMaxAxes; ++k)
+    if (mask & (1u << k)) programmed_[k] = commanded[k];
   for (size_t k = 0; k < kMaxAxes; ++k) {
     if (!(mask & (1u << k))) continue;
     const AxisConfig& a = setup_.axes[k];

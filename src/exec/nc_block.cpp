@@ -321,7 +321,8 @@ void Executor::execNc(const Block& b) {
   if (crcMode) {
     deferring_ = true;
     // Blocks that stop buffering end the lookahead before they run.
-    bool stop = oneShot == 280 || oneShot == 300 || oneShot == 290 || oneShot == 530;
+    // G27 too: it moves to a checked point, not along the compensated contour.
+    bool stop = oneShot == 270 || oneShot == 280 || oneShot == 300 || oneShot == 290 || oneShot == 530;
     // G31 after G40: the probe may touch the simulated stock, which must have every held move.
     stop |= oneShot == 310 && modal_.g[7] == 400;
     for (int k = 0; k < w.nm; ++k) {
