@@ -118,6 +118,15 @@ struct OffsetEvent {
   double value = 0;
 };
 
+// Where work zero is on the machine: the work offset in use, EXT, G52 and G92/G50 shifts,
+// without the tool offset (Executor::workOriginMm), mm, X Y Z with lathe X as a radius. Sent
+// as the control starts and whenever it changes, so a stock fixed on the machine
+// (sim/stock_frame.hpp) can place the moves, which come in work coordinates.
+struct WorkOriginEvent {
+  EventOrigin at;
+  std::array<double, 3> mm{};
+};
+
 // G31: where the skip signal came (or that it never did).
 struct SkipEvent {
   EventOrigin at;
@@ -140,6 +149,7 @@ class EventSink {
   virtual void onOffset(const OffsetEvent&) {}
   virtual void onSkip(const SkipEvent&) {}
   virtual void onComment(const CommentEvent&) {}
+  virtual void onWorkOrigin(const WorkOriginEvent&) {}
 };
 
 // Forwards every event to several sinks in order.
@@ -157,6 +167,9 @@ class FanoutSink final : public EventSink {
   void onOffset(const OffsetEvent& e) override { for (auto* s : sinks_) s->onOffset(e); }
   void onSkip(const SkipEvent& e) override { for (auto* s : sinks_) s->onSkip(e); }
   void onComment(const CommentEvent& e) override { for (auto* s : sinks_) s->onComment(e); }
+  void onWorkOrigin(const WorkOriginEvent& e) override {
+    for (auto* s : sinks_) s->onWorkOrigin(e);
+  }
 
  private:
   std::vector<EventSink*> sinks_;

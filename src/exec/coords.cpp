@@ -54,6 +54,14 @@ void Executor::recomputeOffset() {
   for (size_t k = 0; k < kMaxAxes; ++k)
     offset_[k] = mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(workIndex_)][k] + g52_[k] + g92_[k] +
                  toolShift_[k];
+  // The stock model places the moves on the machine with the work origin (a tool offset
+  // moves the tip, not work zero): tell it when that changes.
+  std::array<int64_t, 3> origin{};
+  for (size_t k = 0; k < 3; ++k) origin[k] = offset_[k] - toolShift_[k];
+  if (originKnown_ && origin == originSent_) return;
+  originKnown_ = true;
+  originSent_ = origin;
+  sink().onWorkOrigin(WorkOriginEvent{origin_, workOriginMm()});
 }
 
 void Executor::writeWorkOffset(int index, int slot, int64_t nm, bool add) {

@@ -52,6 +52,9 @@ void Executor::DeferSink::onOffset(const OffsetEvent& e) {
   });
 }
 void Executor::DeferSink::onSkip(const SkipEvent& e) { ex->deferEvent([e](EventSink& s) { s.onSkip(e); }); }
+void Executor::DeferSink::onWorkOrigin(const WorkOriginEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onWorkOrigin(e); });
+}
 void Executor::DeferSink::onComment(const CommentEvent& e) {
   std::string text(e.text);
   EventOrigin at = e.at;

@@ -170,6 +170,8 @@ class Executor {
   int workIndex_ = kWorkG54;                    // selected work offset table
   std::array<int64_t, kMaxAxes> g52_{}, g92_{}; // local system and G92/G50 shift
   std::array<int64_t, kMaxAxes> toolShift_{};   // tool length (mill) or tool offset (lathe)
+  std::array<int64_t, 3> originSent_{};         // the work origin last sent (WorkOriginEvent)
+  bool originKnown_ = false;                    // one has been sent
   std::unique_ptr<SolidWorld> probeWorld_;
   const ProbeWorld* stockProbe_ = nullptr;
   std::string eventName_;                       // storage behind OffsetEvent::name
@@ -351,6 +353,7 @@ class Executor {
     void onOffset(const OffsetEvent& e) override;
     void onSkip(const SkipEvent& e) override;
     void onComment(const CommentEvent& e) override;
+    void onWorkOrigin(const WorkOriginEvent& e) override;
   };
   struct Pending {
     int tag = -1;                   // >= 0: a compensated move waiting for its path

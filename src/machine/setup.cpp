@@ -359,8 +359,8 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     };
     if (rest == "frame") {
       st.frame = asString(v, w);
-      if (st.frame != "work" && st.frame != "machine" && workOffsetIndex(st.frame) < 0)
-        bad(w, "frame is work, machine or a work offset (G54, ...)");
+      if (st.frame != "work" && st.frame != "machine" && st.frame != "program")
+        bad(w, "frame is work, machine or program (sim/stock_frame.hpp)");
     } else if (rest == "diameter") st.diameter = nonNegative(asNumber(v, w));
     else if (rest == "bore_diameter") st.boreDiameter = nonNegative(asNumber(v, w));
     else if (rest == "length") st.length = nonNegative(asNumber(v, w));

@@ -67,7 +67,7 @@ struct ProbeSpec {
 // the moves are reported in (work coordinates; lathe X as a diameter).
 struct StockSpec {
   bool present = false;
-  std::string frame = "work";  // work (the moves' coordinates), machine, or a work offset name
+  std::string frame = "work";  // work, machine or program (sim/stock_frame.hpp)
   // Lathe: a bar (bore 0) or a tube along Z from frontZ back to frontZ - length.
   double diameter = 0, boreDiameter = 0, length = 0, frontZ = 0;
   // Mill: a box between min and max [x, y, z], simulated in cells of `cell`.

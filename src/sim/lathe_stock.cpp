@@ -103,7 +103,7 @@ std::unique_ptr<StockModel> makeLatheStock(const Setup& setup) {
   return std::make_unique<LatheStock>(setup);
 }
 
-LatheStock::LatheStock(const Setup& setup) : setup_(setup) {
+LatheStock::LatheStock(const Setup& setup) : setup_(setup), frame_(setup, true) {
   const StockSpec& st = setup.stock;
   auto need = [&](bool ok, const std::string& what) {
     if (!ok) throw SetupError("stock: a lathe stock needs " + what, "stock", st.line);
@@ -111,7 +111,6 @@ LatheStock::LatheStock(const Setup& setup) : setup_(setup) {
   need(st.diameter > 0, "a diameter");
   need(st.length > 0, "a length");
   need(st.boreDiameter < st.diameter, "a bore_diameter below its diameter");
-  need(st.frame == "work", "frame = \"work\" (the coordinates of the program)");
   unit_ = setup.initialUnit == InputUnit::Inch ? 1 / 25.4 : 1.0;
   tol_ = setup.target.tolerance > 0 ? setup.target.tolerance : (unit_ < 1 ? 0.0004 : 0.01);
   chord_ = tol_ / 20;
@@ -190,8 +189,12 @@ void LatheStock::onTool(const ToolEvent& e) {
         "T{}: no [tools] entry and no offset row: simulated as a sharp tip-0 insert", e.tool));
   selectTool(spec);
   toolKnown_ = true;
-  // A touch probe touches (G31, probe.use_stock); it does not cut.
+  // A touch probe touches (G31, probe.use_stock); it does not cut. Its ball as G31 sees it
+  // (exec/probe.cpp): probe.ball_diameter for probe.tool (or every tool), else its diameter.
   cuts_ = spec.type != "probe";
+  const ProbeSpec& pr = setup_.probe;
+  probeRadius_ = (pr.tool < 0 || pr.tool == e.tool) && pr.ballDiameter > 0 ? pr.ballDiameter / 2
+                                                                           : spec.diameter / 2;
   noseNow_ = cuts_ ? spec.noseRadius : 0;
   if (cuts_) noseMax_ = std::max(noseMax_, spec.noseRadius);
   if (!cuts_)
@@ -211,9 +214,8 @@ double LatheStock::area() {
   return a;
 }
 
-std::optional<double> LatheStock::Probe::firstContact(const Vec3& a, const Vec3& b,
-                                                     double r) const {
-  return ProfileProbe(owner_.profile(), kScale).firstContact(a, b, r);
+std::optional<double> LatheStock::probeContact(const Vec3& a, const Vec3& b, double r) {
+  return ProfileProbe(profile(), kScale).firstContact(a, b, r);
 }
 
 ClipperLib::Paths LatheStock::profile() {
@@ -410,8 +412,10 @@ void LatheStock::cutMove(const std::vector<Pt>& pts, const MoveEvent& e) {
   }
 }
 
-void LatheStock::onMove(const MoveEvent& e) {
+void LatheStock::onMove(const MoveEvent& work) {
   ++moves_;
+  frame_.move(work);
+  const MoveEvent& e = frame_.place(work, placed_);
   auto rz = [](const AxisArray& a) { return Pt{a[0] / 2, a[2]}; };
   std::vector<Pt> pts{rz(e.start)};
   if (e.arc) {
@@ -437,8 +441,52 @@ void LatheStock::onMove(const MoveEvent& e) {
   pts.push_back(rz(e.end));
   if (!toolKnown_ && moves_ == 1 && !setup_.tools.empty())
     notes_.push_back("moves before the first T use a sharp insert");
-  if (cuts_) cutPath(pts, e);
+  if (cuts_) {
+    cutPath(pts, e);
+  } else if (!e.skip) {
+    checkProbeMove(e, pts);
+  }
   if (setup_.target.present && setup_.target.fromN >= 0) captureTarget(e, pts);
+}
+
+// As on the mill (sim/mill_stock.cpp): the amount is how far the move went on past the first
+// contact. Touching is not a crash: after a G31 the ball sits on the surface (its latch
+// rounded to the increment) and may slide along it, so the test ball is the tolerance
+// smaller (for a point probe: it must go the tolerance deep). A move that starts in the
+// material was reported when it went in, or was left there by a G31.
+void LatheStock::checkProbeMove(const MoveEvent& e, const std::vector<Pt>& pts) {
+  // The path in 3D (radius, Y, Z); Y runs linearly along it (lathe moves leave it alone).
+  const double y0 = e.start[1], y1 = e.end[1];
+  std::vector<Vec3> path;
+  path.reserve(pts.size());
+  for (size_t k = 0; k < pts.size(); ++k) {
+    double u = pts.size() > 1 ? static_cast<double>(k) / static_cast<double>(pts.size() - 1) : 0;
+    path.push_back({pts[k].r, y0 + (y1 - y0) * u, pts[k].z});
+  }
+  auto length = [&](size_t k) {
+    const Vec3 &a = path[k - 1], &b = path[k];
+    return std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  };
+  const double r = probeRadius_ - tol_;
+  std::optional<ProfileProbe> probe;
+  for (size_t k = 1; k < path.size(); ++k) {
+    const double len = length(k);
+    if (len <= 0) continue;
+    const bool first = !probe;
+    if (first) probe.emplace(profile(), kScale);
+    std::optional<double> t = probe->firstContact(path[k - 1], path[k], r);
+    if (!t) continue;
+    if (first && *t == 0) return;
+    double amount = (1 - *t) * len;
+    for (size_t j = k + 1; j < path.size(); ++j) amount += length(j);
+    if (amount <= 0) return;  // reaches the tolerance depth just at its end
+    collisions_.push_back({{"kind", "probe"},
+                           {"program", e.at.programName ? *e.at.programName : std::string()},
+                           {"line", e.at.line},
+                           {"n", e.at.n},
+                           {"amount", amount}});
+    return;
+  }
 }
 
 void LatheStock::captureTarget(const MoveEvent& e, const std::vector<Pt>& pts) {

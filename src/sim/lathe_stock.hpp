@@ -12,6 +12,8 @@
 #include "sim/deviation.hpp"
 #include "sim/lathe_insert.hpp"
 #include "sim/lathe_reachable.hpp"
+#include "sim/model_probe.hpp"
+#include "sim/stock_frame.hpp"
 #include "sim/stock_model.hpp"
 
 namespace ncvm {
@@ -23,6 +25,7 @@ class LatheStock final : public StockModel {
 
   void onMove(const MoveEvent& e) override;
   void onTool(const ToolEvent& e) override;
+  void onWorkOrigin(const WorkOriginEvent& e) override { frame_.origin(e); }
   nlohmann::json finish(const std::string& outDir) override;
   nlohmann::json viewerStock(int maxGrid) override;
   const ProbeWorld* probeWorld() const override { return &probe_; }
@@ -68,6 +71,8 @@ class LatheStock final : public StockModel {
   void cutPath(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
   void cutMove(const std::vector<lsim::Pt>& pts, const MoveEvent& e);
   void captureTarget(const MoveEvent& e, const std::vector<lsim::Pt>& pts);
+  // A probe moved other than by G31 into the stock: a "probe" collision (it does not cut).
+  void checkProbeMove(const MoveEvent& e, const std::vector<lsim::Pt>& pts);
   void loadTargetFile();
   // reach: filled for [target] reachable = "nose" (the samples then lie on its boundary).
   std::vector<Sample> measure(const ClipperLib::Paths& final, ReachablePart* reach) const;
@@ -77,6 +82,8 @@ class LatheStock final : public StockModel {
                               const std::vector<Sample>& samples, nlohmann::json& analysis) const;
 
   const Setup& setup_;
+  StockFrame frame_;
+  MoveEvent placed_;  // scratch: a move shifted into the stock frame
   double unit_ = 1;  // 1 mm in program units (1/25.4 in an inch setup)
   double tol_ = 0.01, chord_ = 0.0005;
   double rIn_ = 0, rOut_ = 0, zFront_ = 0, zBack_ = 0;
@@ -102,6 +109,7 @@ class LatheStock final : public StockModel {
   std::vector<std::string> notes_;
   bool toolKnown_ = false;
   bool cuts_ = true;  // false while a probe is in the turret
+  double probeRadius_ = 0;  // the probe's ball radius while !cuts_ (0: a point)
   // Nose radii for reachable = "nose": the tool's as the target blocks ran (-1: not yet), and
   // the largest of the cutting tools (for a polyline target).
   double noseNow_ = 0, noseTarget_ = -1, noseMax_ = 0;
@@ -117,16 +125,11 @@ class LatheStock final : public StockModel {
   bool havePos_ = false;
   std::string targetSource_;
 
-  // G31 against the profile as cut so far (sim/lathe_probe.hpp): applies the queue first.
-  class Probe final : public ProbeWorld {
-   public:
-    explicit Probe(LatheStock& owner) : owner_(owner) {}
-    std::optional<double> firstContact(const Vec3& a, const Vec3& b, double r) const override;
-
-   private:
-    LatheStock& owner_;
-  };
-  Probe probe_{*this};
+  // G31 against the profile as cut so far (sim/lathe_probe.hpp), stock coordinates (X
+  // radial): applies the queue first.
+  std::optional<double> probeContact(const Vec3& a, const Vec3& b, double r);
+  friend class ModelProbe<LatheStock>;
+  ModelProbe<LatheStock> probe_{*this, frame_};
 };
 
 }  // namespace ncvm

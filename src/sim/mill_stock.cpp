@@ -23,7 +23,7 @@ namespace {
 constexpr double kMaxDefaultCells = 25e6;
 }  // namespace
 
-MillStock::MillStock(const Setup& setup) : setup_(setup) {
+MillStock::MillStock(const Setup& setup) : setup_(setup), frame_(setup, false) {
   const StockSpec& st = setup.stock;
   auto bad = [&](const std::string& what) { throw SetupError("stock: " + what, "stock", st.line); };
   if (st.min.size() != 3 || st.max.size() != 3)
@@ -31,8 +31,6 @@ MillStock::MillStock(const Setup& setup) : setup_(setup) {
   for (int k = 0; k < 3; ++k)
     if (!(st.max[static_cast<size_t>(k)] > st.min[static_cast<size_t>(k)]))
       bad("max must exceed min on every axis");
-  if (st.frame != "work")
-    bad("a mill stock takes frame = \"work\" (the coordinates the moves are reported in)");
   unit_ = setup.initialUnit == InputUnit::Inch ? 1 / 25.4 : 1.0;
   tol_ = setup.target.tolerance > 0 ? setup.target.tolerance : 0.01 * unit_;
   const double w = st.max[0] - st.min[0], h = st.max[1] - st.min[1];
@@ -129,8 +127,10 @@ uint32_t MillStock::tag(const MoveEvent& e) {
   return static_cast<uint32_t>(origins_.size() - 1);
 }
 
-void MillStock::onMove(const MoveEvent& e) {
+void MillStock::onMove(const MoveEvent& work) {
   ++moves_;
+  frame_.move(work);
+  const MoveEvent& e = frame_.place(work, placed_);
   if (moves_ == 1 && !sim_->tool() && selected_ < 0)
     notes_.push_back("moves before the first T word remove nothing (no tool)");
   if (probeRadius_ > 0 && !e.skip) checkProbeMove(e);
@@ -206,8 +206,8 @@ void MillStock::checkProbeMove(const MoveEvent& e) {
   probeHits_.push_back({tag(e), (1.0 - *t) * length});
 }
 
-std::optional<double> MillStock::Probe::firstContact(const Vec3& a, const Vec3& b, double r) const {
-  return heightFieldFirstContact(owner_.sim_->field(), a, b, r);
+std::optional<double> MillStock::probeContact(const Vec3& a, const Vec3& b, double r) {
+  return heightFieldFirstContact(sim_->field(), a, b, r);
 }
 
 nlohmann::json MillStock::finish(const std::string& outDir) {

@@ -10,6 +10,8 @@
 
 #include "sim/mill_analysis.hpp"
 #include "sim/mill_sim.hpp"
+#include "sim/model_probe.hpp"
+#include "sim/stock_frame.hpp"
 #include "sim/stock_model.hpp"
 
 namespace ncvm {
@@ -21,6 +23,7 @@ class MillStock final : public StockModel {
 
   void onMove(const MoveEvent& e) override;
   void onTool(const ToolEvent& e) override;
+  void onWorkOrigin(const WorkOriginEvent& e) override { frame_.origin(e); }
   nlohmann::json finish(const std::string& outDir) override;
   nlohmann::json viewerStock(int maxGrid) override;
   const ProbeWorld* probeWorld() const override { return &probe_; }
@@ -34,19 +37,15 @@ class MillStock final : public StockModel {
   void arc(const MoveEvent& e, uint32_t tag);
   nlohmann::json analysis(const std::string& outDir);
 
-  // G31 against the field as cut so far (sim/heightfield_probe.hpp): applies the queued
-  // moves first.
-  class Probe final : public ProbeWorld {
-   public:
-    explicit Probe(MillStock& owner) : owner_(owner) {}
-    std::optional<double> firstContact(const Vec3& a, const Vec3& b, double r) const override;
-
-   private:
-    MillStock& owner_;
-  };
-  Probe probe_{*this};
+  // G31 against the field as cut so far (sim/heightfield_probe.hpp), stock coordinates:
+  // applies the queued moves first.
+  std::optional<double> probeContact(const Vec3& a, const Vec3& b, double r);
+  friend class ModelProbe<MillStock>;
+  ModelProbe<MillStock> probe_{*this, frame_};
 
   const Setup& setup_;
+  StockFrame frame_;
+  MoveEvent placed_;  // scratch: a move shifted into the stock frame
   double unit_ = 1, cell_ = 0.05, tol_ = 0.01;
   std::unique_ptr<MillSim> sim_;
   std::map<int, MillTool> tools_;  // cutting tools of [tools], by T

@@ -29,10 +29,10 @@ class StockModel : public EventSink {
   // (sim/viewer_stock.cpp). Called after finish().
   virtual nlohmann::json viewerStock(int maxGrid) = 0;
 
-  // G31 against the current stock (probe.use_stock): a ProbeWorld in the stock's own
-  // coordinates (stock.frame, program units), which sim/stock_probe.hpp places in the
-  // machine; it sees every move this sink has received. nullptr when the model cannot be
-  // probed.
+  // G31 against the current stock (probe.use_stock): a ProbeWorld in the moves' coordinates
+  // (the work system in use, program units, X radial; the model shifts them into its frame,
+  // sim/stock_frame.hpp), which sim/stock_probe.hpp places in the machine; it sees every
+  // move this sink has received. nullptr when the model cannot be probed.
   virtual const ProbeWorld* probeWorld() const { return nullptr; }
 };
 

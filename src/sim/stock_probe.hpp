@@ -1,9 +1,9 @@
 #pragma once
 // The simulated stock as the control's probe world (probe.use_stock). A stock model's own
-// probe world is in the stock's coordinates (stock.frame, program units); this one places
-// it in the machine, in millimetres, like every ProbeWorld. With stock.frame = "work" (the
-// moves' coordinates) the stock sits where the work system active at the G31 puts it, so
-// `origin` is asked at every G31.
+// probe world takes the moves' coordinates (the work system in use, program units, X
+// radial) and places them in its frame (sim/stock_frame.hpp) as it places the moves; this
+// one takes machine millimetres, like every ProbeWorld, so `origin` (work zero on the
+// machine now) is asked at every G31.
 #include <functional>
 #include <optional>
 
@@ -14,7 +14,7 @@ namespace ncvm {
 class StockProbe final : public ProbeWorld {
  public:
   // stock: the model's probe world; unitsPerMm: 1 (mm) or 1 / 25.4 (inch stock);
-  // origin: machine position (mm) of the stock frame's origin now.
+  // origin: machine position (mm) of work zero now.
   StockProbe(const ProbeWorld& stock, double unitsPerMm, std::function<Vec3()> origin)
       : stock_(stock), scale_(unitsPerMm), origin_(std::move(origin)) {}
 

@@ -84,17 +84,20 @@ TEST(Setup, StockAndTargetSections) {
   EXPECT_THROW(applySetting(s, "stock.diameter=-1"), SetupError);
   EXPECT_THROW(applySetting(s, "stock.colour=red"), SetupError);
   EXPECT_THROW(applySetting(s, "stock.frame=G99"), SetupError);
+  EXPECT_THROW(applySetting(s, "stock.frame=G54"), SetupError);  // the stock sits on the machine
+  applySetting(s, "stock.frame=program");
+  EXPECT_EQ(s.stock.frame, "program");
 
   ncvm::Setup m = defaultSetup();
   applySetting(m, "stock.min=[-50,-50,-20]");
   applySetting(m, "stock.max=[50,50,0]");
   applySetting(m, "stock.cell=0.05");
-  applySetting(m, "stock.frame=G54");
+  applySetting(m, "stock.frame=machine");
   applySetting(m, "target.face_z=-0.5");
   ASSERT_EQ(m.stock.min.size(), 3u);
   EXPECT_DOUBLE_EQ(m.stock.max[0], 50);
   EXPECT_DOUBLE_EQ(m.stock.cell, 0.05);
-  EXPECT_EQ(m.stock.frame, "G54");
+  EXPECT_EQ(m.stock.frame, "machine");
   ASSERT_TRUE(m.target.faceZ.has_value());
   EXPECT_DOUBLE_EQ(*m.target.faceZ, -0.5);
   EXPECT_THROW(applySetting(m, "stock.min=[1,2]"), SetupError);

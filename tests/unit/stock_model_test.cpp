@@ -45,6 +45,8 @@ TEST(StockModel, MillStockNeedsABlock) {
   s.stock.max = {50, 50, 0};
   EXPECT_NE(makeStockModel(s), nullptr);
   s.stock.frame = "machine";
+  EXPECT_NE(makeStockModel(s), nullptr);
+  s.stock.frame = "G54";  // the stock is not placed by a work offset table
   EXPECT_THROW(makeStockModel(s), SetupError);
   s.stock.frame = "work";
   s.tools[3].type = "ball";  // no diameter
