@@ -26,9 +26,12 @@ void Executor::skipMove(const Words& w) {
   const ProbeSpec& probe = setup_.probe;
   // On a lathe the physical tool is the T code's tool number (T0101 -> tool 1).
   int current = lathe_ ? latheToolNumber(modal_.tool) : modal_.tool;
-  auto tool = setup_.tools.find(current);
+  // [tools.N] as the stock model finds it (by the turret number or the whole T word).
+  const ToolSpec* tool = lathe_ ? physicalTool(setup_, current) : nullptr;
+  if (!lathe_)
+    if (auto it = setup_.tools.find(current); it != setup_.tools.end()) tool = &it->second;
   if ((probe.tool < 0 || probe.tool == current) && probe.ballDiameter > 0) r = probe.ballDiameter / 2;
-  else if (tool != setup_.tools.end()) r = tool->second.diameter / 2;
+  else if (tool) r = tool->diameter / 2;
 
   std::array<int64_t, kMaxAxes> fromM = machine_, toM;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = target[k] + offset_[k];

@@ -579,4 +579,11 @@ void applySetting(Setup& setup, const std::string& assignment) {
   applyKey(setup, key, v, 0);
 }
 
+const ToolSpec* physicalTool(const Setup& setup, int number) {
+  if (auto it = setup.tools.find(number); it != setup.tools.end()) return &it->second;
+  for (const auto& [t, spec] : setup.tools)
+    if (t >= 100 && t / 100 == number) return &spec;
+  return nullptr;
+}
+
 }  // namespace ncvm

@@ -185,4 +185,8 @@ Setup parseSetup(std::string_view text, const std::string& name);
 // ("machine.kind=lathe", "block_skip.1=true", "limits.max_blocks=50", "vars.#500=2").
 void applySetting(Setup& setup, const std::string& assignment);
 
+// The physical tool [tools.N] of tool `number`: that entry, else (a lathe's turret number,
+// T0101 -> 1) the entry of the whole T word (101, 102, ...: the first such). nullptr: none.
+const ToolSpec* physicalTool(const Setup& setup, int number);
+
 }  // namespace ncvm

@@ -169,12 +169,9 @@ void LatheStock::onTool(const ToolEvent& e) {
   // (101); without one, the nose radius and tip of the offset row of the same number.
   ToolSpec spec{"insert"};
   std::string source = "none";
-  for (const auto& [t, ts] : setup_.tools) {
-    if (t == e.tool || (t >= 100 && t / 100 == e.tool)) {
-      spec = ts;
-      source = "tools";
-      break;
-    }
+  if (const ToolSpec* ts = physicalTool(setup_, e.tool)) {
+    spec = *ts;
+    source = "tools";
   }
   if (source == "none") {
     auto it = setup_.toolOffsets.find(e.tool);
