@@ -31,10 +31,15 @@ void Executor::gatherWords(const Block& b, Words& w) {
   const Word* words = p.words.data() + b.firstWord;
   for (uint32_t k = 0; k < b.nWords; ++k) {
     const Word& wd = words[k];
-    double v = wd.value;
+    double v = 0;
     bool point = wd.flags & kHasPoint;
     switch (wd.kind) {
       case WordKind::Literal:
+        if (wd.letter == '<') {
+          w.nameIdx = wd.a;
+          continue;
+        }
+        v = wd.value;
         break;
       case WordKind::Var:
       case WordKind::NegVar: {
@@ -58,10 +63,6 @@ void Executor::gatherWords(const Block& b, Words& w) {
       throw e;
     }
     char L = wd.letter;
-    if (L == '<') {
-      w.nameIdx = wd.a;
-      continue;
-    }
     if (L == 'c' || L == 'r') {
       // ,C and ,R: one of them per block (PS0053 on the control; the later one wins here).
       w.hasCommaC = L == 'c';

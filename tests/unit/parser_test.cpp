@@ -52,8 +52,8 @@ TEST(Parser, NcAndMacroInOneBlock) {
 TEST(Parser, WhileEndResolved) {
   Program p = one("O1\n#1=0\nWHILE[#1LT3]DO1\n#1=#1+1\nEND1\nM30\n");
   ASSERT_EQ(p.blocks[1].kind, BlockKind::While);
-  EXPECT_EQ(p.blocks[1].target, 4);  // the block after END1
-  EXPECT_EQ(p.blocks[3].target, 1);  // END jumps back to WHILE
+  EXPECT_EQ(p.ops(p.blocks[1]).target, 4);  // the block after END1
+  EXPECT_EQ(p.ops(p.blocks[3]).target, 1);  // END jumps back to WHILE
   EXPECT_TRUE(p.structural.empty());
 }
 
