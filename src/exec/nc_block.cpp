@@ -29,6 +29,7 @@ int32_t integerWord(const Words& w, char letter) {
 void Executor::gatherWords(const Block& b, Words& w) {
   const Program& p = *frames_.back().prog;
   const Word* words = p.words.data() + b.firstWord;
+  bool longNumbers = false;
   for (uint32_t k = 0; k < b.nWords; ++k) {
     const Word& wd = words[k];
     double v = 0;
@@ -40,6 +41,7 @@ void Executor::gatherWords(const Block& b, Words& w) {
           continue;
         }
         v = wd.value;
+        longNumbers |= (wd.flags & kLongNumber) != 0;
         break;
       case WordKind::Var:
       case WordKind::NegVar: {
@@ -103,6 +105,15 @@ void Executor::gatherWords(const Block& b, Words& w) {
     w.col[static_cast<size_t>(idx)] = wd.col;
     if (L != 'G' && L != 'L' && L != 'N' && L != 'O' && L != 'P' && w.nArgs < static_cast<int>(w.args.size()))
       w.args[static_cast<size_t>(w.nArgs++)] = Words::Arg{L, v, point};
+  }
+  if (longNumbers) {
+    bool macroCall = false;
+    for (int k = 0; k < w.ng; ++k) {
+      const int g = w.g[static_cast<size_t>(k)];
+      macroCall |= g == 650 || g == 660 || g == 661;
+    }
+    for (uint32_t k = 0; k < b.nWords; ++k)
+      if (words[k].flags & kLongNumber) checkDigits(words[k], macroCall);
   }
 }
 

@@ -52,6 +52,9 @@ enum class WordKind : uint8_t {
 
 enum WordFlags : uint8_t {
   kHasPoint = 1,  // literal written with a decimal point
+  // A literal dimension word (X Y Z U V W A B C I J K R Q) of 999.99999 or more: it may have
+  // more than 8 digits in increments (PS0003), which the executor checks once the unit is known.
+  kLongNumber = 2,
 };
 
 // Block flags (Block::flags), set by the compiler.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -39,6 +40,11 @@ bool forbidsPoint(char letter) {
   }
 }
 // Addresses that take no sign.
+// Addresses whose values are lengths or angles, counted in least increments.
+bool isDimension(char letter) {
+  return letter != 0 && std::strchr("XYZUVWABCIJKRQ", letter);
+}
+
 bool forbidsMinus(char letter) {
   switch (letter) {
     case 'G':
@@ -589,6 +595,9 @@ void Compiler::parseWord() {
     // G65/G66 block those letters are arguments and take a point (D5.0).
     if (intDigits > 9) fail(AlarmId::TooManyDigits, std::string(1, letter), at);
     if (hasPoint) w.flags |= kHasPoint;
+    // 999.99999 is the smallest value that can exceed 99999999 increments (IS-C inch, 10^5 per
+    // inch); smaller ones are never checked again.
+    if (std::fabs(w.value) >= 999.99999 && isDimension(letter)) w.flags |= kLongNumber;
   } else {
     fail(AlarmId::NoDataAfterAddress, std::string(1, letter), at);
   }

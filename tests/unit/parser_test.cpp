@@ -125,3 +125,19 @@ TEST(Parser, NumbersMatchFromChars) {
     EXPECT_EQ(std::bit_cast<uint64_t>(p.words[i].value), std::bit_cast<uint64_t>(want)) << texts[i];
   }
 }
+
+// Literal dimension words of 999.99999 and more are marked for the run-time digit check
+// (PS0003); the layout stays at 16 bytes a word.
+TEST(Parser, LongNumberFlag) {
+  Program p = one("G01 X999.99 Y999.99999 Z-1000. F12345. R123456789 M12345\n");
+  ASSERT_EQ(p.blocks.size(), 1u);
+  const Word* w = p.words.data() + p.blocks[0].firstWord;
+  EXPECT_FALSE(w[1].flags & kLongNumber);  // X999.99
+  EXPECT_TRUE(w[2].flags & kLongNumber);   // Y999.99999
+  EXPECT_TRUE(w[3].flags & kLongNumber);   // Z-1000.
+  EXPECT_FALSE(w[4].flags & kLongNumber);  // F is not a dimension word
+  EXPECT_TRUE(w[5].flags & kLongNumber);   // R123456789
+  EXPECT_FALSE(w[6].flags & kLongNumber);  // M
+  static_assert(sizeof(Word) == 16);       // the IR's memory per word
+  static_assert(sizeof(Block) <= 40);
+}
