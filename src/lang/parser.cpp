@@ -39,12 +39,30 @@ bool forbidsPoint(char letter) {
       return false;
   }
 }
-// Addresses that take no sign.
-// Addresses whose values are lengths or angles, counted in least increments.
-bool isDimension(char letter) {
-  return letter != 0 && std::strchr("XYZUVWABCIJKRQ", letter);
+// Letter sets as bit masks (bit 0 = 'A'): one test per word, no strchr.
+constexpr uint32_t letterMask(const char* letters) {
+  uint32_t m = 0;
+  for (; *letters; ++letters) m |= 1u << (*letters - 'A');
+  return m;
+}
+bool inMask(char letter, uint32_t mask) {
+  return letter >= 'A' && letter <= 'Z' && ((mask >> (letter - 'A')) & 1u);
 }
 
+// Addresses whose values are lengths or angles, counted in least increments.
+bool isDimension(char letter) {
+  return inMask(letter, letterMask("XYZUVWABCIJKRQ"));
+}
+
+// The words a plain motion block may hold (Executor::plainMotion): no other letter, no
+// variable or expression, G only as G00-G03, nothing for the digit check.
+bool plainWord(const Word& w) {
+  if (w.kind != WordKind::Literal || (w.flags & kLongNumber)) return false;
+  if (w.letter == 'G') return w.value == 0 || w.value == 1 || w.value == 2 || w.value == 3;
+  return inMask(w.letter, letterMask("XYZFIJKR"));
+}
+
+// Addresses that take no sign.
 bool forbidsMinus(char letter) {
   switch (letter) {
     case 'G':
@@ -129,7 +147,11 @@ class Compiler {
     if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
-      size_t lines = static_cast<size_t>(std::count(s_.begin(), s_.end(), '\n')) + 1;
+      size_t lines = 1;  // memchr skips a line in a few instructions; std::count does bytes
+      const char* const end = s_.data() + s_.size();
+      for (const char* q = s_.data();
+           (q = static_cast<const char*>(std::memchr(q, '\n', static_cast<size_t>(end - q)))); ++q)
+        ++lines;
       prog_->blocks.reserve(lines);
       prog_->words.reserve(lines * 3);
     }
@@ -427,20 +449,31 @@ void Compiler::parseStatements() {
 void Compiler::commitBlock() {
   Program& p = *prog_;
   uint32_t nWords = static_cast<uint32_t>(p.words.size() - blk_.firstWord);
-  bool macroCall = false;
+  // One pass: G65/G66 (their words are arguments, which take a point), decimal points where
+  // an address forbids them (checked again below, rare), and the plain-block test.
+  bool macroCall = false, forbiddenPoint = false, plain = nWords > 0;
+  uint32_t seen = 0;  // plain: each letter once
   for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     if (w.letter == 'G' && w.kind == WordKind::Literal)
       macroCall |= w.value == 65 || w.value == 66 || w.value == 66.1;
+    forbiddenPoint |= (w.flags & kHasPoint) && forbidsPoint(w.letter);
+    if (plain) {
+      plain = plainWord(w) && !(seen & (1u << (w.letter - 'A')));
+      if (plain) seen |= 1u << (w.letter - 'A');
+    }
   }
-  for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
+  for (uint32_t k = blk_.firstWord; forbiddenPoint && k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     bool argument = macroCall && w.letter != 'P' && w.letter != 'L';
     if ((w.flags & kHasPoint) && forbidsPoint(w.letter) && !argument)
       fail(AlarmId::IllegalDecimalPoint, std::string(1, w.letter), w.col);
   }
   blk_.nWords = static_cast<uint16_t>(nWords);
-  if (nWords > 0 && blk_.kind == BlockKind::Empty) blk_.kind = BlockKind::Nc;
+  if (nWords > 0 && blk_.kind == BlockKind::Empty) {
+    blk_.kind = BlockKind::Nc;
+    if (plain) blk_.flags |= kPlainBlock;
+  }
   if (blk_.kind == BlockKind::Empty && blk_.n < 0 && blk_.skipLevel == 0 && blk_.comment < 0)
     return;  // nothing to keep
   if (blk_.n >= 0) p.labels.emplace_back(blk_.n, static_cast<uint32_t>(p.blocks.size()));

@@ -141,3 +141,25 @@ TEST(Parser, LongNumberFlag) {
   static_assert(sizeof(Word) == 16);       // the IR's memory per word
   static_assert(sizeof(Block) <= 40);
 }
+
+// The compiler marks the blocks the executor's plain-motion path may read directly.
+TEST(Parser, PlainBlockFlag) {
+  auto flagged = [](const char* line) {
+    Program p = one(line);
+    EXPECT_EQ(p.blocks.size(), 1u) << line;
+    return p.blocks.empty() ? false : (p.blocks[0].flags & kPlainBlock) != 0;
+  };
+  EXPECT_TRUE(flagged("X1. Y2. Z-3.\n"));
+  EXPECT_TRUE(flagged("G01 X1.5 Y-2 F100.\n"));
+  EXPECT_TRUE(flagged("N10 G02 X10. Y0 I5. J0\n"));
+  EXPECT_TRUE(flagged("G3 X1. R5.\n"));
+  EXPECT_FALSE(flagged("G01 X#1\n"));           // a variable
+  EXPECT_FALSE(flagged("G01 X[1+2]\n"));        // an expression
+  EXPECT_FALSE(flagged("G01 X1. X2.\n"));       // a letter twice
+  EXPECT_FALSE(flagged("G01 G90 X1.\n"));       // two G codes
+  EXPECT_FALSE(flagged("G04 X1.\n"));           // not G00-G03
+  EXPECT_FALSE(flagged("G01 X1. M08\n"));       // an M code
+  EXPECT_FALSE(flagged("G01 X1. ,R2.\n"));      // a corner word
+  EXPECT_FALSE(flagged("G01 X1000. F100.\n"));  // long enough for the digit check
+  EXPECT_FALSE(flagged("#1=2\n"));
+}
