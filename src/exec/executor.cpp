@@ -200,7 +200,7 @@ void Executor::jumpTo(int32_t label, bool computed) {
   const Block& b = *block_;
   int32_t t = -1;
   if (!computed) {
-    t = b.target;
+    t = f.prog->ops(b).target;
   } else {
     if (label < 1 || label > 99999999)
       throw AlarmError(AlarmId::IllegalMacroSequence, std::to_string(label));
@@ -298,6 +298,7 @@ bool Executor::step() {
   origin_.n = b.n;
   origin_.programName = &prog.label;
   deferring_ = crcBusy();
+  const MacroOps& o = prog.ops(b);
   switch (b.kind) {
     case BlockKind::Empty:
       // A comment alone on its line names what follows (the time report's operations).
@@ -306,7 +307,7 @@ bool Executor::step() {
       ++f.pc;
       break;
     case BlockKind::Error: {
-      const Alarm& a = prog.errors[static_cast<size_t>(b.error)];
+      const Alarm& a = prog.errors[static_cast<size_t>(o.error)];
       AlarmError e(a.code, a.text);
       e.hasLoc = true;
       e.loc = a.loc;
@@ -314,39 +315,39 @@ bool Executor::step() {
       throw e;
     }
     case BlockKind::Assign: {
-      Value v = eval(b.rhs);
-      int64_t n = b.lhsVar;
-      if (b.lhsExpr >= 0) n = roundedIndex(eval(b.lhsExpr).asNumber());
+      Value v = eval(o.rhs);
+      int64_t n = o.lhsVar;
+      if (o.lhsExpr >= 0) n = roundedIndex(eval(o.lhsExpr).asNumber());
       ++f.pc;
       writeVar(n, v);
       break;
     }
     case BlockKind::If:
-      if (!evalCond(b.cond)) {
+      if (!evalCond(o.cond)) {
         ++f.pc;
-      } else if (b.thenAssign) {
-        Value v = eval(b.rhs);
-        int64_t n = b.lhsVar;
-        if (b.lhsExpr >= 0) n = roundedIndex(eval(b.lhsExpr).asNumber());
+      } else if (o.thenAssign) {
+        Value v = eval(o.rhs);
+        int64_t n = o.lhsVar;
+        if (o.lhsExpr >= 0) n = roundedIndex(eval(o.lhsExpr).asNumber());
         ++f.pc;
         writeVar(n, v);
       } else {
-        jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(roundedIndex(eval(b.gotoExpr).asNumber()))
-                               : b.gotoLabel,
-               b.gotoExpr >= 0);
+        jumpTo(o.gotoExpr >= 0 ? static_cast<int32_t>(roundedIndex(eval(o.gotoExpr).asNumber()))
+                               : o.gotoLabel,
+               o.gotoExpr >= 0);
       }
       break;
     case BlockKind::Goto:
-      jumpTo(b.gotoExpr >= 0 ? static_cast<int32_t>(roundedIndex(eval(b.gotoExpr).asNumber()))
-                             : b.gotoLabel,
-             b.gotoExpr >= 0);
+      jumpTo(o.gotoExpr >= 0 ? static_cast<int32_t>(roundedIndex(eval(o.gotoExpr).asNumber()))
+                             : o.gotoLabel,
+             o.gotoExpr >= 0);
       break;
     case BlockKind::While:
-      if (b.cond < 0 || evalCond(b.cond)) ++f.pc;
-      else f.pc = static_cast<uint32_t>(b.target);
+      if (o.cond < 0 || evalCond(o.cond)) ++f.pc;
+      else f.pc = static_cast<uint32_t>(o.target);
       break;
     case BlockKind::End:
-      f.pc = static_cast<uint32_t>(b.target);
+      f.pc = static_cast<uint32_t>(o.target);
       break;
     case BlockKind::Print:
       print(b);

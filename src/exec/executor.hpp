@@ -228,6 +228,8 @@ class Executor {
   void execNc(const Block& b);
   bool plainMotion(Words& w);  // execNc's fast path for plain G00-G03 blocks
   void gatherWords(const Block& b, Words& w);
+  void gatherPlainWords(const Block& b, Words& w) const;  // a kPlainBlock block's words
+  void checkDigits(const Word& wd, bool macroCall) const;  // PS0003 for a kLongNumber word
   bool codeCall(const Block& b, Words& w);
   void buildArgs(const Words& w, int callingM, std::array<Value, 33>& args, std::array<double, 33>& scale) const;
   void macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,

@@ -28,6 +28,28 @@ int64_t Executor::lengthNm(double v, bool point, int slot) const {
   return inc * nmPer;
 }
 
+// A dimension word may have at most 8 digits counted in least increments of the current unit
+// and increment system (PS0003, like the control's tape format check): IS-B mm allows
+// X99999.999, X12345678.9 is 12345678900 increments. Only literals are checked (a variable's
+// value is not limited this way), and not the arguments of G65/G66, which become variables.
+void Executor::checkDigits(const Word& wd, bool macroCall) const {
+  if (macroCall) return;
+  int slot = -1;  // A B C: degrees when the machine has that rotary axis
+  if (wd.letter >= 'A' && wd.letter <= 'C') slot = 3 + (wd.letter - 'A');
+  const bool rotary = slot >= 0 && setup_.axes[static_cast<size_t>(slot)].present &&
+                      setup_.axes[static_cast<size_t>(slot)].rotary;
+  const int64_t perUnit = incrementsPerUnit(setup_.increment, rotary ? InputUnit::Mm : modal_.unit);
+  const bool point = wd.flags & kHasPoint;
+  const int64_t inc =
+      (point || dpi_) ? roundToIncrements(wd.value, perUnit) : roundHalfAway(wd.value);
+  if (inc > 99999999 || inc < -99999999) {
+    AlarmError e(AlarmId::TooManyDigits, fmt::format("{}: {} increments, more than 8 digits",
+                                                     wd.letter, inc < 0 ? -inc : inc));
+    e.col = wd.col;
+    throw e;
+  }
+}
+
 double Executor::toProgramUnits(int64_t nm, int slot, bool diameter) const {
   const AxisConfig& a = setup_.axes[static_cast<size_t>(slot)];
   double per = a.rotary ? 1e6 : (modal_.unit == InputUnit::Inch ? static_cast<double>(kNmPerInch)

@@ -26,15 +26,43 @@ int32_t integerWord(const Words& w, char letter) {
 }
 }  // namespace
 
+// The words of a block the compiler marked plain (kPlainBlock): literals, each letter once,
+// at most one G (G00-G03), no M, name or comma word, none long enough for the digit check,
+// so of gatherWords' work only the values, points and columns are left.
+void Executor::gatherPlainWords(const Block& b, Words& w) const {
+  const Word* words = frames_.back().prog->words.data() + b.firstWord;
+  for (uint32_t k = 0; k < b.nWords; ++k) {
+    const Word& wd = words[k];
+    if (wd.letter == 'G') {
+      w.g[0] = static_cast<int16_t>(wd.value * 10.0);
+      w.gcol[0] = wd.col;
+      w.ng = 1;
+      continue;
+    }
+    const auto idx = static_cast<size_t>(wd.letter - 'A');
+    w.present |= bit(wd.letter);
+    if (wd.flags & kHasPoint) w.point |= bit(wd.letter);
+    w.val[idx] = wd.value;
+    w.col[idx] = wd.col;
+  }
+}
+
 void Executor::gatherWords(const Block& b, Words& w) {
   const Program& p = *frames_.back().prog;
   const Word* words = p.words.data() + b.firstWord;
+  bool longNumbers = false;
   for (uint32_t k = 0; k < b.nWords; ++k) {
     const Word& wd = words[k];
-    double v = wd.value;
+    double v = 0;
     bool point = wd.flags & kHasPoint;
     switch (wd.kind) {
       case WordKind::Literal:
+        if (wd.letter == '<') {
+          w.nameIdx = wd.a;
+          continue;
+        }
+        v = wd.value;
+        longNumbers |= (wd.flags & kLongNumber) != 0;
         break;
       case WordKind::Var:
       case WordKind::NegVar: {
@@ -58,10 +86,6 @@ void Executor::gatherWords(const Block& b, Words& w) {
       throw e;
     }
     char L = wd.letter;
-    if (L == '<') {
-      w.nameIdx = wd.a;
-      continue;
-    }
     if (L == 'c' || L == 'r') {
       // ,C and ,R: one of them per block (PS0053 on the control; the later one wins here).
       w.hasCommaC = L == 'c';
@@ -102,6 +126,15 @@ void Executor::gatherWords(const Block& b, Words& w) {
     w.col[static_cast<size_t>(idx)] = wd.col;
     if (L != 'G' && L != 'L' && L != 'N' && L != 'O' && L != 'P' && w.nArgs < static_cast<int>(w.args.size()))
       w.args[static_cast<size_t>(w.nArgs++)] = Words::Arg{L, v, point};
+  }
+  if (longNumbers) {
+    bool macroCall = false;
+    for (int k = 0; k < w.ng; ++k) {
+      const int g = w.g[static_cast<size_t>(k)];
+      macroCall |= g == 650 || g == 660 || g == 661;
+    }
+    for (uint32_t k = 0; k < b.nWords; ++k)
+      if (words[k].flags & kLongNumber) checkDigits(words[k], macroCall);
   }
 }
 
@@ -235,6 +268,11 @@ bool Executor::plainMotion(Words& w) {
 
 void Executor::execNc(const Block& b) {
   Words w;
+  if (b.flags & kPlainBlock) {
+    gatherPlainWords(b, w);
+    if (plainMotion(w)) return;
+    w = Words{};  // a mode the fast path does not handle: the generic path from the start
+  }
   gatherWords(b, w);
   if (plainMotion(w)) return;
   Frame& f = frames_.back();

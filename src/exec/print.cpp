@@ -39,17 +39,18 @@ std::string formatDprnt(double v, int a, int b, bool prt) {
 
 void Executor::print(const Block& b) {
   const Program& p = *frames_.back().prog;
+  const MacroOps& o = p.ops(b);
   bool prt = setup_.prt();
   // The line is built whole first: an alarm in one of its items prints nothing of it.
   std::string line;
-  for (uint32_t k = 0; k < b.nPrint; ++k) {
-    const PrintItem& item = p.prints[b.firstPrint + k];
+  for (uint32_t k = 0; k < o.nPrint; ++k) {
+    const PrintItem& item = p.prints[o.firstPrint + k];
     if (!item.isVar) {
       line += item.text;
       continue;
     }
     double v = eval(item.expr).asNumber();  // a vacant variable prints as 0
-    if (b.printKind == PrintKind::Dprnt) {
+    if (o.printKind == PrintKind::Dprnt) {
       line += formatDprnt(v, item.intDigits, item.fracDigits, prt);
     } else {
       // BPRNT: value x 10^b as a 32-bit binary number, high byte first.

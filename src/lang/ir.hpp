@@ -52,16 +52,31 @@ enum class WordKind : uint8_t {
 
 enum WordFlags : uint8_t {
   kHasPoint = 1,  // literal written with a decimal point
+  // A literal dimension word (X Y Z U V W A B C I J K R Q) of 999.99999 or more: it may have
+  // more than 8 digits in increments (PS0003), which the executor checks once the unit is known.
+  kLongNumber = 2,
 };
 
-// Letters are 'A'..'Z'; the 30i comma words ,C and ,R are stored as 'c' and 'r'.
+// Block flags (Block::flags), set by the compiler.
+enum BlockFlags : uint8_t {
+  // Only literal words, each letter once, of G00/G01/G02/G03 (at most one G) and X Y Z F I J
+  // K R, none of them long enough to need the digit-count check: the executor's plain-motion
+  // path reads such a block's words directly (it still checks the modal state).
+  kPlainBlock = 1,
+};
+
+// Letters are 'A'..'Z'; the 30i comma words ,C and ,R are stored as 'c' and 'r'. 16 bytes: a
+// literal needs only `value`, every other kind only `a`, so they share the storage (a
+// 1,000,000-line CAM program holds 3,000,000 words).
 struct Word {
   char letter = 0;
   WordKind kind = WordKind::Literal;
   uint8_t flags = 0;
   uint16_t col = 0;
-  int32_t a = 0;
-  double value = 0.0;
+  union {
+    double value = 0.0;  // Literal
+    int32_t a;           // Var/NegVar: variable number; Expr: expression index; '<': string
+  };
 };
 
 enum class BlockKind : uint8_t {
@@ -87,16 +102,9 @@ struct PrintItem {
   uint8_t intDigits = 0, fracDigits = 0;
 };
 
-struct Block {
-  BlockKind kind = BlockKind::Empty;
-  uint8_t skipLevel = 0;  // 0 = no '/', 1..9 = '/' or '/n'
-  uint16_t nWords = 0;
-  uint32_t firstWord = 0;
-  SourceLoc loc;           // start of the block
-  int32_t n = -1;          // sequence number, -1 = none
-  int32_t comment = -1;    // index into Program::strings of the block's first comment
-
-  // Macro statement operands (meaning depends on kind; -1 = unused).
+// Operands of the macro statements (and the error of an Error block), kept apart from Block
+// so the NC blocks that make up nearly all of a CAM program stay small (-1 = unused).
+struct MacroOps {
   int32_t cond = -1;       // condition expression (If, While)
   int32_t lhsVar = -1;     // Assign: literal variable number
   int32_t lhsExpr = -1;    // Assign: indirect variable expression
@@ -105,12 +113,24 @@ struct Block {
   int32_t gotoExpr = -1;   // If/Goto: computed target expression
   int32_t target = -1;     // resolved block index (Goto/If literal target; While: after END;
                            // End: its While)
-  uint8_t loopId = 0;      // While/End: m
   bool thenAssign = false; // If: THEN form (uses lhs*/rhs)
   PrintKind printKind = PrintKind::Dprnt;
   uint32_t firstPrint = 0, nPrint = 0;  // into Program::prints
-  int32_t loopParent = -1; // index of the innermost enclosing While block
   int32_t error = -1;      // Error: index into Program::errors
+};
+
+struct Block {
+  BlockKind kind = BlockKind::Empty;
+  uint8_t skipLevel = 0;  // 0 = no '/', 1..9 = '/' or '/n'
+  uint8_t loopId = 0;     // While/End: m
+  uint8_t flags = 0;      // BlockFlags
+  uint16_t nWords = 0;
+  uint32_t firstWord = 0;
+  SourceLoc loc;           // start of the block
+  int32_t n = -1;          // sequence number, -1 = none
+  int32_t comment = -1;    // index into Program::strings of the block's first comment
+  int32_t loopParent = -1; // index of the innermost enclosing While block
+  int32_t ops = -1;        // index into Program::macroOps; -1 for NC and empty blocks
 };
 
 struct Program {
@@ -120,6 +140,7 @@ struct Program {
   SourceLoc loc;          // header location
   std::vector<Block> blocks;
   std::vector<Word> words;
+  std::vector<MacroOps> macroOps;  // the macro and error blocks' operands (Block::ops)
   std::vector<Instr> code;
   std::vector<double> consts;
   std::vector<ExprRange> exprs;
@@ -134,6 +155,12 @@ struct Program {
   std::vector<std::pair<int32_t, uint32_t>> labels;
 
   std::string displayName() const;
+  // A block's macro operands; all -1 for a block that has none.
+  const MacroOps& ops(const Block& b) const {
+    static const MacroOps none;
+    return b.ops >= 0 ? macroOps[static_cast<size_t>(b.ops)] : none;
+  }
+  MacroOps& ops(Block& b) { return macroOps[static_cast<size_t>(b.ops)]; }
   // Block index of the first block with sequence number n at or after `from`, then from the
   // start (the control's search order); -1 if none.
   int32_t findLabel(int32_t n, uint32_t from = 0) const;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -38,6 +39,29 @@ bool forbidsPoint(char letter) {
       return false;
   }
 }
+// Letter sets as bit masks (bit 0 = 'A'): one test per word, no strchr.
+constexpr uint32_t letterMask(const char* letters) {
+  uint32_t m = 0;
+  for (; *letters; ++letters) m |= 1u << (*letters - 'A');
+  return m;
+}
+bool inMask(char letter, uint32_t mask) {
+  return letter >= 'A' && letter <= 'Z' && ((mask >> (letter - 'A')) & 1u);
+}
+
+// Addresses whose values are lengths or angles, counted in least increments.
+bool isDimension(char letter) {
+  return inMask(letter, letterMask("XYZUVWABCIJKRQ"));
+}
+
+// The words a plain motion block may hold (Executor::plainMotion): no other letter, no
+// variable or expression, G only as G00-G03, nothing for the digit check.
+bool plainWord(const Word& w) {
+  if (w.kind != WordKind::Literal || (w.flags & kLongNumber)) return false;
+  if (w.letter == 'G') return w.value == 0 || w.value == 1 || w.value == 2 || w.value == 3;
+  return inMask(w.letter, letterMask("XYZFIJKR"));
+}
+
 // Addresses that take no sign.
 bool forbidsMinus(char letter) {
   switch (letter) {
@@ -92,6 +116,7 @@ class Compiler {
   ParsedFile out_;
   Program* prog_ = nullptr;
   Block blk_;
+  MacroOps ops_;  // the macro operands of blk_ (stored only for macro blocks)
   int depth_ = 0;            // bracket nesting inside the current expression
   bool sawStatement_ = false;  // a macro statement is in this block
   bool inWhile_ = false;       // the block's WHILE is being compiled
@@ -122,7 +147,11 @@ class Compiler {
     if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
-      size_t lines = static_cast<size_t>(std::count(s_.begin(), s_.end(), '\n')) + 1;
+      size_t lines = 1;  // memchr skips a line in a few instructions; std::count does bytes
+      const char* const end = s_.data() + s_.size();
+      for (const char* q = s_.data();
+           (q = static_cast<const char*>(std::memchr(q, '\n', static_cast<size_t>(end - q)))); ++q)
+        ++lines;
       prog_->blocks.reserve(lines);
       prog_->words.reserve(lines * 3);
     }
@@ -234,6 +263,7 @@ void Compiler::parseBlock(size_t b, size_t e) {
   skipSpaces();
   if (atEnd()) return;
   blk_ = Block{};
+  ops_ = MacroOps{};
   blk_.loc = SourceLoc{file_, line_, col()};
   sawStatement_ = false;
   inWhile_ = false;
@@ -275,7 +305,11 @@ void Compiler::parseBlock(size_t b, size_t e) {
     Block bad = blk_;
     bad.kind = BlockKind::Error;
     bad.nWords = 0;
-    bad.error = static_cast<int32_t>(p.errors.size() - 1);
+    bad.flags = 0;
+    MacroOps badOps;
+    badOps.error = static_cast<int32_t>(p.errors.size() - 1);
+    p.macroOps.push_back(badOps);
+    bad.ops = static_cast<int32_t>(p.macroOps.size() - 1);
     if (bad.n >= 0) p.labels.emplace_back(bad.n, static_cast<uint32_t>(p.blocks.size()));
     p.blocks.push_back(bad);
   }
@@ -317,6 +351,7 @@ bool Compiler::parseHeader() {
     } else {
       // Anything else after a program number is an ordinary block on the same line.
       blk_ = Block{};
+      ops_ = MacroOps{};
       blk_.loc = SourceLoc{file_, line_, col()};
       blk_.firstWord = static_cast<uint32_t>(prog_->words.size());
       parseStatements();
@@ -414,23 +449,38 @@ void Compiler::parseStatements() {
 void Compiler::commitBlock() {
   Program& p = *prog_;
   uint32_t nWords = static_cast<uint32_t>(p.words.size() - blk_.firstWord);
-  bool macroCall = false;
+  // One pass: G65/G66 (their words are arguments, which take a point), decimal points where
+  // an address forbids them (checked again below, rare), and the plain-block test.
+  bool macroCall = false, forbiddenPoint = false, plain = nWords > 0;
+  uint32_t seen = 0;  // plain: each letter once
   for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     if (w.letter == 'G' && w.kind == WordKind::Literal)
       macroCall |= w.value == 65 || w.value == 66 || w.value == 66.1;
+    forbiddenPoint |= (w.flags & kHasPoint) && forbidsPoint(w.letter);
+    if (plain) {
+      plain = plainWord(w) && !(seen & (1u << (w.letter - 'A')));
+      if (plain) seen |= 1u << (w.letter - 'A');
+    }
   }
-  for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
+  for (uint32_t k = blk_.firstWord; forbiddenPoint && k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     bool argument = macroCall && w.letter != 'P' && w.letter != 'L';
     if ((w.flags & kHasPoint) && forbidsPoint(w.letter) && !argument)
       fail(AlarmId::IllegalDecimalPoint, std::string(1, w.letter), w.col);
   }
   blk_.nWords = static_cast<uint16_t>(nWords);
-  if (nWords > 0 && blk_.kind == BlockKind::Empty) blk_.kind = BlockKind::Nc;
+  if (nWords > 0 && blk_.kind == BlockKind::Empty) {
+    blk_.kind = BlockKind::Nc;
+    if (plain) blk_.flags |= kPlainBlock;
+  }
   if (blk_.kind == BlockKind::Empty && blk_.n < 0 && blk_.skipLevel == 0 && blk_.comment < 0)
     return;  // nothing to keep
   if (blk_.n >= 0) p.labels.emplace_back(blk_.n, static_cast<uint32_t>(p.blocks.size()));
+  if (blk_.kind != BlockKind::Nc && blk_.kind != BlockKind::Empty) {
+    p.macroOps.push_back(ops_);
+    blk_.ops = static_cast<int32_t>(p.macroOps.size() - 1);
+  }
   p.blocks.push_back(blk_);
 }
 
@@ -578,6 +628,9 @@ void Compiler::parseWord() {
     // G65/G66 block those letters are arguments and take a point (D5.0).
     if (intDigits > 9) fail(AlarmId::TooManyDigits, std::string(1, letter), at);
     if (hasPoint) w.flags |= kHasPoint;
+    // 999.99999 is the smallest value that can exceed 99999999 increments (IS-C inch, 10^5 per
+    // inch); smaller ones are never checked again.
+    if (std::fabs(w.value) >= 999.99999 && isDimension(letter)) w.flags |= kLongNumber;
   } else {
     fail(AlarmId::NoDataAfterAddress, std::string(1, letter), at);
   }
@@ -626,20 +679,20 @@ void Compiler::parseAssign(bool asThen) {
       n = n * 10 + (peek() - '0'), ++i_;
       if (n > 99999999) fail(AlarmId::VariableOutOfRange, {}, at);
     }
-    blk_.lhsVar = static_cast<int32_t>(n);
+    ops_.lhsVar = static_cast<int32_t>(n);
   } else if (peek() == '[') {
     depth_ = 0;
     uint32_t begin = static_cast<uint32_t>(prog_->code.size());
     if (parseBracket() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
     prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
-    blk_.lhsExpr = static_cast<int32_t>(prog_->exprs.size() - 1);
+    ops_.lhsExpr = static_cast<int32_t>(prog_->exprs.size() - 1);
   } else {
     fail(AlarmId::IllegalExpressionFormat, "'#' without a variable number", at);
   }
   skipSpaces();
   if (peek() != '=') fail(AlarmId::MacroStatementFormat, "'=' expected", col());
   ++i_;
-  blk_.rhs = compileExpr(Type::Num, col());
+  ops_.rhs = compileExpr(Type::Num, col());
   if (!asThen) blk_.kind = BlockKind::Assign;
 }
 
@@ -653,7 +706,7 @@ void Compiler::parseIf() {
   if (parseBracket() != Type::Bool)
     fail(AlarmId::IllegalExpressionFormat, "IF needs a condition (EQ NE GT GE LT LE)", at);
   prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
-  blk_.cond = static_cast<int32_t>(prog_->exprs.size() - 1);
+  ops_.cond = static_cast<int32_t>(prog_->exprs.size() - 1);
   skipSpaces();
   if (peekKeyword("GOTO")) {
     i_ += 4;
@@ -661,7 +714,7 @@ void Compiler::parseIf() {
   } else if (peekKeyword("THEN")) {
     i_ += 4;
     skipSpaces();
-    blk_.thenAssign = true;
+    ops_.thenAssign = true;
     parseAssign(true);
   } else {
     fail(AlarmId::MacroStatementFormat, "IF without GOTO or THEN", col());
@@ -678,13 +731,13 @@ void Compiler::parseGotoTarget() {
       if (n > 99999999) break;
     }
     if (n < 1 || n > 99999999) fail(AlarmId::IllegalMacroSequence, std::to_string(n), at);
-    blk_.gotoLabel = static_cast<int32_t>(n);
+    ops_.gotoLabel = static_cast<int32_t>(n);
   } else if (peek() == '#' || peek() == '[') {
     depth_ = 0;
     uint32_t begin = static_cast<uint32_t>(prog_->code.size());
     if (parsePrimary() != Type::Num) fail(AlarmId::IllegalExpressionFormat, {}, at);
     prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
-    blk_.gotoExpr = static_cast<int32_t>(prog_->exprs.size() - 1);
+    ops_.gotoExpr = static_cast<int32_t>(prog_->exprs.size() - 1);
   } else {
     fail(AlarmId::MacroStatementFormat, "GOTO needs a sequence number", at);
   }
@@ -713,7 +766,7 @@ void Compiler::parseDo(int32_t cond) {
   int n = 0;
   while (isDigit(peek())) n = std::min(n * 10 + (peek() - '0'), 1000), ++i_;
   blk_.kind = BlockKind::While;
-  blk_.cond = cond;
+  ops_.cond = cond;
   blk_.loopId = static_cast<uint8_t>(std::min(n, 255));
 }
 
@@ -733,8 +786,8 @@ void Compiler::parsePrint(PrintKind kind) {
   if (peek() != '[') fail(AlarmId::MacroStatementFormat, "DPRNT needs [...]", at);
   ++i_;
   blk_.kind = BlockKind::Print;
-  blk_.printKind = kind;
-  blk_.firstPrint = static_cast<uint32_t>(prog_->prints.size());
+  ops_.printKind = kind;
+  ops_.firstPrint = static_cast<uint32_t>(prog_->prints.size());
   PrintItem text;
   auto flushText = [&] {
     if (!text.text.empty()) prog_->prints.push_back(text), text.text.clear();
@@ -785,7 +838,7 @@ void Compiler::parsePrint(PrintKind kind) {
     ++i_;
   }
   flushText();
-  blk_.nPrint = static_cast<uint32_t>(prog_->prints.size()) - blk_.firstPrint;
+  ops_.nPrint = static_cast<uint32_t>(prog_->prints.size()) - ops_.firstPrint;
 }
 
 // ---- expressions ----------------------------------------------------------------------------
@@ -1052,8 +1105,8 @@ void resolveStructure(Program& p) {
       uint32_t w = open.back();
       open.pop_back();
       b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
-      b.target = static_cast<int32_t>(w);
-      p.blocks[w].target = static_cast<int32_t>(k + 1);
+      p.ops(b).target = static_cast<int32_t>(w);
+      p.ops(p.blocks[w]).target = static_cast<int32_t>(k + 1);
     }
   }
   for (uint32_t o : open) structural(p.blocks[o], AlarmId::MissingEnd, "DO " + std::to_string(p.blocks[o].loopId));
@@ -1061,14 +1114,15 @@ void resolveStructure(Program& p) {
   // Literal GOTO targets: must exist and must not jump into a loop.
   for (uint32_t k = 0; k < p.blocks.size(); ++k) {
     Block& b = p.blocks[k];
-    if ((b.kind != BlockKind::Goto && !(b.kind == BlockKind::If && !b.thenAssign)) || b.gotoLabel < 0)
-      continue;
-    int32_t t = p.findLabel(b.gotoLabel, k);
+    if (b.kind != BlockKind::Goto && b.kind != BlockKind::If) continue;
+    MacroOps& o = p.ops(b);
+    if ((b.kind == BlockKind::If && o.thenAssign) || o.gotoLabel < 0) continue;
+    int32_t t = p.findLabel(o.gotoLabel, k);
     if (t < 0) {
-      structural(b, AlarmId::IllegalMacroSequence, "N" + std::to_string(b.gotoLabel) + " not found");
+      structural(b, AlarmId::IllegalMacroSequence, "N" + std::to_string(o.gotoLabel) + " not found");
       continue;
     }
-    b.target = t;
+    o.target = t;
     // The target's enclosing loops must all enclose the GOTO too.
     for (int32_t l = p.blocks[t].loopParent; l >= 0; l = p.blocks[l].loopParent) {
       bool enclosesSource = false;
@@ -1076,7 +1130,7 @@ void resolveStructure(Program& p) {
         if (s == l) enclosesSource = true;
       if (static_cast<uint32_t>(t) == static_cast<uint32_t>(l)) break;  // jumping to the WHILE itself
       if (!enclosesSource) {
-        structural(b, AlarmId::IllegalLoopNumber, "GOTO " + std::to_string(b.gotoLabel) + " jumps into a loop");
+        structural(b, AlarmId::IllegalLoopNumber, "GOTO " + std::to_string(o.gotoLabel) + " jumps into a loop");
         break;
       }
     }

@@ -63,7 +63,9 @@ std::vector<const Program*> ProgramStore::addTooLarge(const std::string& path, u
   Block b;
   b.kind = BlockKind::Error;
   b.loc = p.loc;
-  b.error = 0;
+  p.macroOps.push_back(MacroOps{});
+  p.macroOps.back().error = 0;
+  b.ops = 0;
   p.blocks.push_back(b);
   programs_.push_back(std::move(p));
   return {&programs_.back()};

@@ -29,26 +29,28 @@ inline void checkProgram(const Program& p) {
   };
   for (size_t k = 0; k < nb; ++k) {
     const Block& b = p.blocks[k];
+    if (b.ops >= 0 && static_cast<size_t>(b.ops) >= p.macroOps.size()) violated("macro operands", k);
+    const MacroOps& o = p.ops(b);
     if (static_cast<size_t>(b.firstWord) + b.nWords > p.words.size()) violated("word range", k);
     for (uint32_t w = 0; w < b.nWords; ++w) {
       const Word& wd = p.words[b.firstWord + w];
       if (wd.kind == WordKind::Expr) expr(wd.a, k);
     }
-    expr(b.cond, k);
-    expr(b.lhsExpr, k);
-    expr(b.rhs, k);
-    expr(b.gotoExpr, k);
+    expr(o.cond, k);
+    expr(o.lhsExpr, k);
+    expr(o.rhs, k);
+    expr(o.gotoExpr, k);
     if (b.comment >= 0 && static_cast<size_t>(b.comment) >= p.strings.size())
       violated("comment", k);
-    if (static_cast<size_t>(b.firstPrint) + b.nPrint > p.prints.size()) violated("print range", k);
-    for (uint32_t i = 0; i < b.nPrint; ++i) {
-      const PrintItem& it = p.prints[b.firstPrint + i];
+    if (static_cast<size_t>(o.firstPrint) + o.nPrint > p.prints.size()) violated("print range", k);
+    for (uint32_t i = 0; i < o.nPrint; ++i) {
+      const PrintItem& it = p.prints[o.firstPrint + i];
       if (it.isVar) expr(it.expr, k);
     }
     if (b.kind == BlockKind::Error &&
-        (b.error < 0 || static_cast<size_t>(b.error) >= p.errors.size()))
+        (o.error < 0 || static_cast<size_t>(o.error) >= p.errors.size()))
       violated("error index", k);
-    if (b.kind == BlockKind::Assign && b.lhsVar < 0 && b.lhsExpr < 0)
+    if (b.kind == BlockKind::Assign && o.lhsVar < 0 && o.lhsExpr < 0)
       violated("assignment target", k);
     if (b.loopParent >= 0 && (static_cast<size_t>(b.loopParent) >= nb ||
                               p.blocks[static_cast<size_t>(b.loopParent)].kind != BlockKind::While))
@@ -56,16 +58,16 @@ inline void checkProgram(const Program& p) {
     // Jump targets are only guaranteed when the program has no structural error (the
     // control refuses to run it otherwise).
     if (p.structural.empty()) {
-      if (b.kind == BlockKind::While && (b.target < 0 || static_cast<size_t>(b.target) > nb))
+      if (b.kind == BlockKind::While && (o.target < 0 || static_cast<size_t>(o.target) > nb))
         violated("WHILE target", k);
       if (b.kind == BlockKind::End &&
-          (b.target < 0 || static_cast<size_t>(b.target) >= nb ||
-           p.blocks[static_cast<size_t>(b.target)].kind != BlockKind::While))
+          (o.target < 0 || static_cast<size_t>(o.target) >= nb ||
+           p.blocks[static_cast<size_t>(o.target)].kind != BlockKind::While))
         violated("END target", k);
       bool literalJump =
-          (b.kind == BlockKind::Goto || (b.kind == BlockKind::If && !b.thenAssign)) &&
-          b.gotoExpr < 0 && b.gotoLabel >= 0;
-      if (literalJump && (b.target < 0 || static_cast<size_t>(b.target) >= nb))
+          (b.kind == BlockKind::Goto || (b.kind == BlockKind::If && !o.thenAssign)) &&
+          o.gotoExpr < 0 && o.gotoLabel >= 0;
+      if (literalJump && (o.target < 0 || static_cast<size_t>(o.target) >= nb))
         violated("GOTO target", k);
     }
   }

@@ -52,8 +52,8 @@ TEST(Parser, NcAndMacroInOneBlock) {
 TEST(Parser, WhileEndResolved) {
   Program p = one("O1\n#1=0\nWHILE[#1LT3]DO1\n#1=#1+1\nEND1\nM30\n");
   ASSERT_EQ(p.blocks[1].kind, BlockKind::While);
-  EXPECT_EQ(p.blocks[1].target, 4);  // the block after END1
-  EXPECT_EQ(p.blocks[3].target, 1);  // END jumps back to WHILE
+  EXPECT_EQ(p.ops(p.blocks[1]).target, 4);  // the block after END1
+  EXPECT_EQ(p.ops(p.blocks[3]).target, 1);  // END jumps back to WHILE
   EXPECT_TRUE(p.structural.empty());
 }
 
@@ -124,4 +124,42 @@ TEST(Parser, NumbersMatchFromChars) {
     std::from_chars(t.data(), t.data() + t.size(), want);
     EXPECT_EQ(std::bit_cast<uint64_t>(p.words[i].value), std::bit_cast<uint64_t>(want)) << texts[i];
   }
+}
+
+// Literal dimension words of 999.99999 and more are marked for the run-time digit check
+// (PS0003); the layout stays at 16 bytes a word.
+TEST(Parser, LongNumberFlag) {
+  Program p = one("G01 X999.99 Y999.99999 Z-1000. F12345. R123456789 M12345\n");
+  ASSERT_EQ(p.blocks.size(), 1u);
+  const Word* w = p.words.data() + p.blocks[0].firstWord;
+  EXPECT_FALSE(w[1].flags & kLongNumber);  // X999.99
+  EXPECT_TRUE(w[2].flags & kLongNumber);   // Y999.99999
+  EXPECT_TRUE(w[3].flags & kLongNumber);   // Z-1000.
+  EXPECT_FALSE(w[4].flags & kLongNumber);  // F is not a dimension word
+  EXPECT_TRUE(w[5].flags & kLongNumber);   // R123456789
+  EXPECT_FALSE(w[6].flags & kLongNumber);  // M
+  static_assert(sizeof(Word) == 16);       // the IR's memory per word
+  static_assert(sizeof(Block) <= 40);
+}
+
+// The compiler marks the blocks the executor's plain-motion path may read directly.
+TEST(Parser, PlainBlockFlag) {
+  auto flagged = [](const char* line) {
+    Program p = one(line);
+    EXPECT_EQ(p.blocks.size(), 1u) << line;
+    return p.blocks.empty() ? false : (p.blocks[0].flags & kPlainBlock) != 0;
+  };
+  EXPECT_TRUE(flagged("X1. Y2. Z-3.\n"));
+  EXPECT_TRUE(flagged("G01 X1.5 Y-2 F100.\n"));
+  EXPECT_TRUE(flagged("N10 G02 X10. Y0 I5. J0\n"));
+  EXPECT_TRUE(flagged("G3 X1. R5.\n"));
+  EXPECT_FALSE(flagged("G01 X#1\n"));           // a variable
+  EXPECT_FALSE(flagged("G01 X[1+2]\n"));        // an expression
+  EXPECT_FALSE(flagged("G01 X1. X2.\n"));       // a letter twice
+  EXPECT_FALSE(flagged("G01 G90 X1.\n"));       // two G codes
+  EXPECT_FALSE(flagged("G04 X1.\n"));           // not G00-G03
+  EXPECT_FALSE(flagged("G01 X1. M08\n"));       // an M code
+  EXPECT_FALSE(flagged("G01 X1. ,R2.\n"));      // a corner word
+  EXPECT_FALSE(flagged("G01 X1000. F100.\n"));  // long enough for the digit check
+  EXPECT_FALSE(flagged("#1=2\n"));
 }
