@@ -33,6 +33,8 @@ class TimingStage final : public EventSink {
   const TimeReport& report() const { return report_; }
   TimeReport takeReport() { return std::move(report_); }
   bool dynamic() const { return t_.dynamic; }
+  // True while the stage holds events it has not forwarded yet (the look-ahead).
+  bool holding() const { return !held_.empty() || !after_.empty() || !marks_.empty(); }
 
   void onMove(const MoveEvent& e) override;
   void onDwell(const DwellEvent& e) override;
