@@ -123,6 +123,17 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   usedThread_ = worker != nullptr;
   // Without a sink the stage keeps no events, only what the time report needs.
   if (timing_) stage = std::make_unique<TimingStage>(setup_, worker ? worker->stageSink() : sink);
+  if (stage) {
+    // Each file's line table is allocated once, at the file's size, when its first line runs.
+    std::vector<uint32_t> lines;
+    for (const Program& p : store_.programs()) {
+      if (p.blocks.empty()) continue;
+      const SourceLoc& last = p.blocks.back().loc;
+      if (last.file >= lines.size()) lines.resize(last.file + 1);
+      lines[last.file] = std::max(lines[last.file], last.line);
+    }
+    stage->setLineCounts(std::move(lines));
+  }
   if (worker) worker->start(*stage);
   EventSink* first = worker  ? static_cast<EventSink*>(worker.get())
                      : stage ? static_cast<EventSink*>(stage.get())
@@ -193,7 +204,26 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   // cycle_time is the modelled time ([timing] model = "dynamic") or length / feed.
   s["cycle_time"] = r.timing ? r.timing->total().model : r.stats.time;
   s["cycle_time_simple"] = r.stats.time;
-  if (r.timing) s["timing"] = r.timing->toJson(files_, setup_.timing.dynamic);
+  if (r.timing) {
+    // The time report's lines keep no origin: the top blocks' program and N come from the
+    // block on the line.
+    auto lineOrigin = [this](uint32_t file, uint32_t line, const std::string*& program,
+                             int32_t& n) {
+      for (const Program& p : store_.programs()) {
+        if (p.blocks.empty() || p.blocks.front().loc.file != file ||
+            line < p.blocks.front().loc.line || line > p.blocks.back().loc.line)
+          continue;
+        auto b = std::lower_bound(p.blocks.begin(), p.blocks.end(), line,
+                                  [](const Block& x, uint32_t l) { return x.loc.line < l; });
+        if (b != p.blocks.end() && b->loc.line == line) {
+          program = &p.label;
+          n = b->n;
+          return;
+        }
+      }
+    };
+    s["timing"] = r.timing->toJson(files_, setup_.timing.dynamic, 10, lineOrigin);
+  }
   s["blocks"] = r.stats.blocks;
   s["moves"] = r.stats.moves;
   s["path_length"] = {{"rapid", r.stats.rapidLength}, {"feed", r.stats.feedLength}};

@@ -1,6 +1,9 @@
 #include "timing/timing_thread.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
 
 #include "report/trace_writer.hpp"
 #include "timing/timing_stage.hpp"
@@ -18,8 +21,30 @@ namespace {
 constexpr int kSpins = 256;
 // The control makes its events visible to the worker in batches (one fenced store each).
 constexpr uint64_t kBatch = 32;
+constexpr uint64_t kWake = TimingThread::kCapacity / 4;
 static_assert((TimingThread::kCapacity & (TimingThread::kCapacity - 1)) == 0, "a power of two");
 static_assert(kBatch < TimingThread::kCapacity);
+
+// The stage alone (no sink after it) reads a move's head (up to the dog-leg path) and its
+// thread flag: the ring carries only those, about 300 of the event's 680 bytes. With a sink
+// after the stage the whole event goes, the path only as far as it is used.
+constexpr size_t kMoveHead = offsetof(MoveEvent, path);
+constexpr size_t kMoveTail = offsetof(MoveEvent, thread);
+static_assert(std::is_trivially_copyable_v<MoveEvent>);
+
+inline void copyMove(MoveEvent& to, const MoveEvent& from, bool whole) {
+  std::memcpy(static_cast<void*>(&to), &from, kMoveHead);
+  if (whole) {
+    std::memcpy(static_cast<void*>(to.path.data()), from.path.data(),
+                sizeof(AxisArray) * static_cast<size_t>(std::clamp(from.pathPoints, 0, kMaxAxes)));
+    std::memcpy(reinterpret_cast<char*>(&to) + kMoveTail,
+                reinterpret_cast<const char*>(&from) + kMoveTail, sizeof(MoveEvent) - kMoveTail);
+  } else {
+    to.thread = from.thread;
+    to.skip = from.skip;
+    to.compensated = to.nose = false;
+  }
+}
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -64,7 +89,7 @@ std::exception_ptr TimingThread::finish() {
   if (finished_) return nullptr;
   finished_ = true;
   if (thread_.joinable()) {
-    publish();
+    publish(true);
     stop_.store(true);
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -97,7 +122,7 @@ bool TimingThread::admit(const EventOrigin& at, std::string_view t0, std::string
   allowedSeen_ = allowed_.load(std::memory_order_acquire);
   if (boundSum_ + bound_ <= allowedSeen_) return true;
   // The sinks might reach their limit: let the worker take everything, then see again.
-  publish();
+  publish(true);
   waitHead(tail_);
   allowedSeen_ = allowed_.load(std::memory_order_acquire);
   if (failed_.load(std::memory_order_acquire) && !rethrown_) rethrowFailure();
@@ -110,8 +135,9 @@ TimingThread::Record& TimingThread::claim() {
   if (tail_ - headSeen_ == kCapacity) {
     headSeen_ = head_.load(std::memory_order_acquire);
     if (tail_ - headSeen_ == kCapacity) {
-      publish();
-      waitHead(tail_ - kCapacity + 1);
+      // Full: wait until half of it is free again, not for every single slot.
+      publish(true);
+      waitHead(tail_ - kCapacity / 2);
     }
   }
   return ring_[tail_ & (kCapacity - 1)];
@@ -124,11 +150,14 @@ void TimingThread::commit(Record& r) {
   if (tail_ - publishedLocal_ >= kBatch) publish();
 }
 
-void TimingThread::publish() {
-  if (tail_ == publishedLocal_) return;
-  publishedLocal_ = tail_;
-  published_.store(tail_);  // seq_cst: ordered before the load of workerSleeps_
-  if (workerSleeps_.load()) {
+// A sleeping worker is woken only once a quarter of the ring waits for it (or when the
+// control must wait for it): one wake-up, a system call, per 128 events rather than per batch.
+void TimingThread::publish(bool wake) {
+  if (tail_ != publishedLocal_) {
+    publishedLocal_ = tail_;
+    published_.store(tail_);  // seq_cst: ordered before the load of workerSleeps_
+  }
+  if (workerSleeps_.load() && (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWake)) {
     std::lock_guard<std::mutex> lock(mutex_);
     workerWake_.notify_one();
   }
@@ -141,6 +170,7 @@ void TimingThread::waitHead(uint64_t target) {
     relax();
   }
   std::unique_lock<std::mutex> lock(mutex_);
+  wantHead_.store(target, std::memory_order_relaxed);  // published by the next store
   producerSleeps_.store(true);
   producerWake_.wait(lock, [&] { return head_.load() >= target; });
   producerSleeps_.store(false, std::memory_order_relaxed);
@@ -151,7 +181,7 @@ void TimingThread::onMove(const MoveEvent& e) {
   if (!admit(e.at)) return stage_->onMove(e);
   Record& r = claim();
   r.kind = Kind::Move;
-  r.move = e;
+  copyMove(r.move, e, downstream_ != nullptr);
   commit(r);
 }
 
@@ -269,7 +299,7 @@ void TimingThread::work() {
       deliver(ring_[head & (kCapacity - 1)]);
       ++head;
       head_.store(head);  // seq_cst: ordered before the load of producerSleeps_
-      if (producerSleeps_.load()) {
+      if (producerSleeps_.load() && head >= wantHead_.load(std::memory_order_relaxed)) {
         std::lock_guard<std::mutex> lock(mutex_);
         producerWake_.notify_one();
       }

@@ -104,7 +104,7 @@ class TimingThread final : public EventSink {
   bool admit(const EventOrigin& at, std::string_view t0 = {}, std::string_view t1 = {});
   Record& claim();  // the next free slot (waits while the ring is full)
   void commit(Record& r);
-  void publish();
+  void publish(bool wake = false);
   void waitHead(uint64_t target);  // until the worker has taken every event before target
   void goSynchronous();
   void rethrowFailure();
@@ -159,7 +159,8 @@ class TimingThread final : public EventSink {
   alignas(64) std::atomic<bool> failed_{false};
   std::atomic<bool> stop_{false};
   std::atomic<bool> workerSleeps_{false}, producerSleeps_{false};
-  std::exception_ptr error_;  // written by the worker before failed_
+  std::atomic<uint64_t> wantHead_{0};  // what a sleeping control waits for
+  std::exception_ptr error_;           // written by the worker before failed_
   std::mutex mutex_;
   std::condition_variable workerWake_, producerWake_;
 
