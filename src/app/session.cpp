@@ -12,6 +12,7 @@
 
 #include "app/machine_state.hpp"
 #include "timing/timing_stage.hpp"
+#include "timing/timing_thread.hpp"
 
 #ifndef NCVM_SOURCE_MACROS
 #define NCVM_SOURCE_MACROS ""
@@ -112,9 +113,32 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     throw SetupError("probe.use_stock: this stock model cannot be probed", "probe.use_stock");
   // The time model sits between the control and the caller's sinks.
   std::unique_ptr<TimingStage> stage;
+  // With a worker thread the stage and the sinks after it run beside the control: the
+  // control never reads the modelled times. The inspector reads the control from a sink,
+  // so it keeps them on the control's thread.
+  const int threads = timingThreads_ >= 0 ? timingThreads_ : setup_.timing.threads;
+  std::unique_ptr<TimingThread> worker;
+  if (timing_ && threads > 0 && !inspector_ && TimingThread::usable(sink))
+    worker = std::make_unique<TimingThread>(sink, files_);
+  usedThread_ = worker != nullptr;
   // Without a sink the stage keeps no events, only what the time report needs.
-  if (timing_) stage = std::make_unique<TimingStage>(setup_, sink);
-  EventSink* first = stage ? static_cast<EventSink*>(stage.get()) : sink ? sink : &none;
+  if (timing_) stage = std::make_unique<TimingStage>(setup_, worker ? worker->stageSink() : sink);
+  if (stage) {
+    // Each file's line table is allocated once, at the file's size, when its first line runs.
+    std::vector<uint32_t> lines;
+    for (const Program& p : store_.programs()) {
+      if (p.blocks.empty()) continue;
+      const SourceLoc& last = p.blocks.back().loc;
+      if (last.file >= lines.size()) lines.resize(last.file + 1);
+      lines[last.file] = std::max(lines[last.file], last.line);
+    }
+    stage->setLineCounts(std::move(lines));
+  }
+  if (worker) worker->start(*stage);
+  EventSink* first = worker  ? static_cast<EventSink*>(worker.get())
+                     : stage ? static_cast<EventSink*>(stage.get())
+                     : sink  ? sink
+                             : &none;
   // The stock takes every event straight from the control, before the stage's look-ahead
   // holds cutting moves back: when a G31 asks the stock, every earlier move is in it. It
   // needs no modelled times.
@@ -142,6 +166,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   r.end = exec.run(*main_);
   if (stage) {
     try {
+      // The worker takes what is left in its ring and stops; the stage is this thread's
+      // again. A sink's exception the control has not seen comes out here.
+      if (worker)
+        if (std::exception_ptr e = worker->finish()) std::rethrow_exception(e);
       stage->finish();
     } catch (const AlarmError& e) {
       // A sink refused the moves the stage still held (the trace size limit).
@@ -176,7 +204,26 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   // cycle_time is the modelled time ([timing] model = "dynamic") or length / feed.
   s["cycle_time"] = r.timing ? r.timing->total().model : r.stats.time;
   s["cycle_time_simple"] = r.stats.time;
-  if (r.timing) s["timing"] = r.timing->toJson(files_, setup_.timing.dynamic);
+  if (r.timing) {
+    // The time report's lines keep no origin: the top blocks' program and N come from the
+    // block on the line.
+    auto lineOrigin = [this](uint32_t file, uint32_t line, const std::string*& program,
+                             int32_t& n) {
+      for (const Program& p : store_.programs()) {
+        if (p.blocks.empty() || p.blocks.front().loc.file != file ||
+            line < p.blocks.front().loc.line || line > p.blocks.back().loc.line)
+          continue;
+        auto b = std::lower_bound(p.blocks.begin(), p.blocks.end(), line,
+                                  [](const Block& x, uint32_t l) { return x.loc.line < l; });
+        if (b != p.blocks.end() && b->loc.line == line) {
+          program = &p.label;
+          n = b->n;
+          return;
+        }
+      }
+    };
+    s["timing"] = r.timing->toJson(files_, setup_.timing.dynamic, 10, lineOrigin);
+  }
   s["blocks"] = r.stats.blocks;
   s["moves"] = r.stats.moves;
   s["path_length"] = {{"rapid", r.stats.rapidLength}, {"feed", r.stats.feedLength}};

@@ -2,6 +2,7 @@
 // Canonical machine events: what the control makes the machine do, as plain values. The
 // control emits them to an EventSink; the trace writer, statistics, and later the cycle-time
 // model, stock simulator and viewer are sinks. None of them ever sees G-code.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -150,6 +151,14 @@ class EventSink {
   virtual void onSkip(const SkipEvent&) {}
   virtual void onComment(const CommentEvent&) {}
   virtual void onWorkOrigin(const WorkOriginEvent&) {}
+  // May this sink run on another thread than the control's (src/timing/timing_thread.hpp)?
+  // Only when it touches nothing but its own state and what the events point to, and throws
+  // only at a size limit it reports in byteHeadroom() (or on an I/O error).
+  virtual bool runsOnAnyThread() const { return false; }
+  // A sink that throws once its output passes a size (the trace limit): the bytes it still
+  // takes. The worker thread hands the sink back to the control's thread before the limit
+  // can be reached, so the alarm comes at the same event as without it.
+  virtual uint64_t byteHeadroom() const { return UINT64_MAX; }
 };
 
 // Forwards every event to several sinks in order.
@@ -169,6 +178,16 @@ class FanoutSink final : public EventSink {
   void onComment(const CommentEvent& e) override { for (auto* s : sinks_) s->onComment(e); }
   void onWorkOrigin(const WorkOriginEvent& e) override {
     for (auto* s : sinks_) s->onWorkOrigin(e);
+  }
+  bool runsOnAnyThread() const override {
+    for (auto* s : sinks_)
+      if (!s->runsOnAnyThread()) return false;
+    return true;
+  }
+  uint64_t byteHeadroom() const override {
+    uint64_t h = UINT64_MAX;
+    for (auto* s : sinks_) h = std::min(h, s->byteHeadroom());
+    return h;
   }
 
  private:

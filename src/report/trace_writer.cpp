@@ -130,7 +130,12 @@ void TraceWriter::begin(const char* type, const EventOrigin& at) {
 void TraceWriter::end() {
   buf_ += "}\n";
   if (buf_.size() >= kChunk && out_) flush();
-  if (written_ + buf_.size() > maxBytes_) throw AlarmError(AlarmId::TraceLimit, "limits.max_trace_bytes");
+  if (written_ + buf_.size() > maxBytes_) {
+    // The events the control still sends (the moves the time stage held, the alarm's
+    // release of a look-ahead) would only throw again: the trace ends with the alarm.
+    full_ = true;
+    throw AlarmError(AlarmId::TraceLimit, "limits.max_trace_bytes");
+  }
 }
 
 void TraceWriter::number(double v) {
@@ -229,6 +234,7 @@ void TraceWriter::axes(const char* key, const AxisArray& a) {
 void TraceWriter::string(std::string_view s) { escapeInto(buf_, s); }
 
 void TraceWriter::onMove(const MoveEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   // The head holds the file and program names, whatever their length; everything after it
   // has a bounded size: six axis arrays, the centre, the path points and a few numbers, each
   // at most kNumberChars long.
@@ -293,6 +299,7 @@ void TraceWriter::onMove(const MoveEvent& e) {
 }
 
 void TraceWriter::onDwell(const DwellEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   begin("dwell", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"time\":{}", e.time);
   if (e.revolutions > 0) fmt::format_to(std::back_inserter(buf_), ",\"revolutions\":{}", e.revolutions);
@@ -300,6 +307,7 @@ void TraceWriter::onDwell(const DwellEvent& e) {
 }
 
 void TraceWriter::onMessage(const MessageEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   begin("message", e.at);
   buf_ += ",\"text\":";
   string(e.text);
@@ -318,12 +326,14 @@ void TraceWriter::onAlarm(const AlarmEvent& e) {
 }
 
 void TraceWriter::onTool(const ToolEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   begin("tool", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"tool\":{},\"change\":{}", e.tool, e.change);
   end();
 }
 
 void TraceWriter::onSpindle(const SpindleEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   static const char* dirs[] = {"stop", "cw", "ccw", "orient"};
   begin("spindle", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"dir\":\"{}\",\"rpm\":{}", dirs[static_cast<int>(e.dir)], e.rpm);
@@ -331,6 +341,7 @@ void TraceWriter::onSpindle(const SpindleEvent& e) {
 }
 
 void TraceWriter::onCoolant(const CoolantEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   static const char* states[] = {"off", "flood", "mist"};
   begin("coolant", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"state\":\"{}\"", states[static_cast<int>(e.state)]);
@@ -338,12 +349,14 @@ void TraceWriter::onCoolant(const CoolantEvent& e) {
 }
 
 void TraceWriter::onAux(const AuxEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   begin("aux", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"letter\":\"{}\",\"code\":{}", e.letter, e.code);
   end();
 }
 
 void TraceWriter::onOffset(const OffsetEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   begin("offset", e.at);
   buf_ += ",\"kind\":";
   string(e.kind);
@@ -354,6 +367,7 @@ void TraceWriter::onOffset(const OffsetEvent& e) {
 }
 
 void TraceWriter::onSkip(const SkipEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
   begin("skip", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"hit\":{}", e.hit);
   axes("position", e.position);

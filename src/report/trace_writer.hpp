@@ -29,6 +29,12 @@ class TraceWriter final : public EventSink {
   void onAux(const AuxEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
+  // Formats into its own buffer and writes its own FILE: it may run on a worker thread.
+  bool runsOnAnyThread() const override { return true; }
+  uint64_t byteHeadroom() const override { return bytes() >= maxBytes_ ? 0 : maxBytes_ - bytes(); }
+  // No event's line is longer than this plus six times (an escaped byte is at most \u00XX)
+  // its file and program names and texts: the worker's bound (src/timing/timing_thread.cpp).
+  static constexpr uint64_t kMaxLineFixed = 4096 + 512;
 
  private:
   void begin(const char* type, const EventOrigin& at);
@@ -58,6 +64,7 @@ class TraceWriter final : public EventSink {
   int axes_;
   std::string buf_;
   uint64_t written_ = 0;
+  bool full_ = false;  // the limit was passed (and thrown once)
   std::vector<std::string> escapedNames_;
   std::string lastProgram_, lastProgramEscaped_;  // programName(): the last one escaped
   AxesText lastEnd_, lastMend_;

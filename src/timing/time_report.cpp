@@ -59,20 +59,17 @@ void TimeReport::commentSeen(std::string_view text, const EventOrigin& at) {
   o.byComment = true;
 }
 
-// Out of the per-move path: the table grows by doubling, so this runs a few times per file.
+// Out of the per-move path: a file's table is allocated at the file's size, or grows by
+// doubling, so this runs once or a few times per file.
 void TimeReport::growLines(const EventOrigin& at) {
   if (at.file >= lines_.size()) lines_.resize(at.file + 1);
-  auto& file = lines_[at.file];
-  if (at.line >= file.size()) file.resize(std::max<size_t>(at.line + 1, file.size() * 2));
-}
-
-TimePair& TimeReport::lineSlot(const EventOrigin& at) {
-  if (at.file >= lines_.size() || at.line >= lines_[at.file].size()) [[unlikely]]
-    growLines(at);
-  LineSlot& l = lines_[at.file][at.line];
-  if (l.count == 0) l.programName = at.programName, l.n = at.n;
-  ++l.count;
-  return l.time;
+  LineTable& t = lines_[at.file];
+  size_t size = std::max<size_t>(at.line + 1, t.count.size() * 2);
+  if (t.count.empty() && at.file < lineCounts_.size() && lineCounts_[at.file] >= at.line)
+    size = lineCounts_[at.file] + size_t{1};
+  t.model.resize(size);
+  t.simple.resize(size);
+  t.count.resize(size);
 }
 
 void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double simple) {
@@ -82,7 +79,7 @@ void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double 
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
   if (kind == TimeKind::Dwell) ++o.moves;
-  lineSlot(at).add(model, simple);
+  addLine(at, model, simple);
 }
 
 void TimeReport::addMoveTime(MoveMode mode, const EventOrigin& at, double length, double model,
@@ -96,7 +93,7 @@ void TimeReport::addMoveTime(MoveMode mode, const EventOrigin& at, double length
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
   (rapid ? o.rapidLength : o.feedLength) += length;
   ++o.moves;
-  lineSlot(at).add(model, simple);
+  addLine(at, model, simple);
 }
 
 void TimeReport::addCutting(double model, double simple, double length, uint64_t moves) {
@@ -156,7 +153,7 @@ std::vector<ToolTime> TimeReport::byTool() const {
   return out;
 }
 
-std::vector<LineTime> TimeReport::topLines(size_t n) const {
+std::vector<LineTime> TimeReport::topLines(size_t n, const LineOrigin& origin) const {
   // One pass keeping the n best (n is small): no copy of every line.
   auto before = [](const LineTime& a, const LineTime& b) {
     if (a.time.model != b.time.model) return a.time.model > b.time.model;
@@ -168,18 +165,19 @@ std::vector<LineTime> TimeReport::topLines(size_t n) const {
   // Most lines lose to the n-th best on time alone: no record built for them.
   double floor = -std::numeric_limits<double>::infinity();
   for (size_t f = 0; f < lines_.size(); ++f) {
-    for (size_t ln = 0; ln < lines_[f].size(); ++ln) {
-      const LineSlot& l = lines_[f][ln];
-      if (l.time.model < floor || !l.count) continue;
-      LineTime t{
-          EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), l.n, l.programName},
-          l.count, l.time};
+    const LineTable& tab = lines_[f];
+    for (size_t ln = 0; ln < tab.count.size(); ++ln) {
+      if (tab.model[ln] < floor || !tab.count[ln]) continue;
+      LineTime t{EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), -1, nullptr},
+                 tab.count[ln], TimePair{tab.model[ln], tab.simple[ln]}};
       if (best.size() == n && !before(t, best.back())) continue;
       best.insert(std::upper_bound(best.begin(), best.end(), t, before), t);
       if (best.size() > n) best.pop_back();
       if (best.size() == n) floor = best.back().time.model;
     }
   }
+  if (origin)
+    for (LineTime& l : best) origin(l.at.file, l.at.line, l.at.programName, l.at.n);
   return best;
 }
 
@@ -196,7 +194,8 @@ nlohmann::json where(const EventOrigin& at, const SourceFiles& files) {
 }
 }  // namespace
 
-nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t topN) const {
+nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t topN,
+                                  const LineOrigin& origin) const {
   nlohmann::json j;
   j["model"] = dynamic ? "dynamic" : "simple";
   j["total"] = total_.model;
@@ -227,7 +226,7 @@ nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t
   }
   j["operations"] = ops;
   nlohmann::json top = nlohmann::json::array();
-  for (const auto& l : topLines(topN)) {
+  for (const auto& l : topLines(topN, origin)) {
     nlohmann::json e = where(l.at, files);
     if (e.is_null()) e = nlohmann::json::object();
     e["count"] = l.count;

@@ -4,6 +4,7 @@
 // plain length / feed time beside it; plus the peck-drilling count (pecks and full
 // retracts), so two drilling strategies can be compared.
 #include <cstdint>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -67,7 +68,7 @@ class TimeReport {
   // addMoveTime in two halves again, for a run of cutting moves planned as one profile: each
   // block's time on its line, then the run's sums once.
   void addLineTime(const EventOrigin& at, double model, double simple) {
-    lineSlot(at).add(model, simple);
+    addLine(at, model, simple);
   }
   void addCutting(double model, double simple, double length, uint64_t moves);
   void add(TimeKind kind, const EventOrigin& at, double model, double simple);
@@ -80,29 +81,43 @@ class TimeReport {
   const std::vector<OperationTime>& operations() const { return ops_; }
   const DrillStats& drilling() const { return drill_; }
   std::vector<ToolTime> byTool() const;
-  std::vector<LineTime> topLines(size_t n) const;
+  // The per-line table keeps times and counts only (20 bytes a line); where a line is (its
+  // program and N number) comes from this for the few lines reported. Without it the top
+  // blocks have no program and N.
+  using LineOrigin =
+      std::function<void(uint32_t file, uint32_t line, const std::string*& program, int32_t& n)>;
+  std::vector<LineTime> topLines(size_t n, const LineOrigin& origin = {}) const;
+  // The number of lines of each file (by file id): a file's table is allocated once, at its
+  // size, when its first line runs (otherwise it grows by doubling).
+  void setLineCounts(std::vector<uint32_t> counts) { lineCounts_ = std::move(counts); }
 
-  nlohmann::json toJson(const SourceFiles& files, bool dynamic, size_t topN = 10) const;
+  nlohmann::json toJson(const SourceFiles& files, bool dynamic, size_t topN = 10,
+                        const LineOrigin& origin = {}) const;
 
  private:
   OperationTime& op();
-  TimePair& lineSlot(const EventOrigin& at);
+  void addLine(const EventOrigin& at, double model, double simple) {
+    if (at.file >= lines_.size() || at.line >= lines_[at.file].count.size()) [[unlikely]]
+      growLines(at);
+    LineTable& t = lines_[at.file];
+    t.model[at.line] += model;
+    t.simple[at.line] += simple;
+    ++t.count[at.line];
+  }
   void growLines(const EventOrigin& at);
 
   TimePair total_;
   std::array<TimePair, kTimeKinds> byKind_{};
   std::vector<OperationTime> ops_;
   int tool_ = 0;
-  // Per file, per line (lines are dense: a vector, not a map); file and line are the indexes.
-  // All zero until a block of the line runs (programName and n are set then), so the table
-  // grows by a plain memset.
-  struct LineSlot {
-    const std::string* programName;
-    int32_t n;
-    uint32_t count;
-    TimePair time;
+  // Per file, per line (lines are dense: vectors, not a map); file and line are the indexes.
+  // All zero until a block of the line runs, so the table grows by a plain memset.
+  struct LineTable {
+    std::vector<double> model, simple;
+    std::vector<uint32_t> count;
   };
-  std::vector<std::vector<LineSlot>> lines_;
+  std::vector<LineTable> lines_;
+  std::vector<uint32_t> lineCounts_;
   // Drilling state.
   DrillStats drill_;
   bool inHole_ = false, retractedToTop_ = false;

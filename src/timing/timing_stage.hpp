@@ -32,7 +32,11 @@ class TimingStage final : public EventSink {
   void finish();
   const TimeReport& report() const { return report_; }
   TimeReport takeReport() { return std::move(report_); }
+  // Lines per file (TimeReport::setLineCounts); before the first event.
+  void setLineCounts(std::vector<uint32_t> counts) { report_.setLineCounts(std::move(counts)); }
   bool dynamic() const { return t_.dynamic; }
+  // True while the stage holds events it has not forwarded yet (the look-ahead).
+  bool holding() const { return !held_.empty() || !after_.empty() || !marks_.empty(); }
 
   void onMove(const MoveEvent& e) override;
   void onDwell(const DwellEvent& e) override;

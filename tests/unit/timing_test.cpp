@@ -283,3 +283,25 @@ TEST(TimingStage, OperationsByComment) {
   ASSERT_EQ(simple.timing->operations().size(), 3u);
   EXPECT_NEAR(simple.timing->operations()[1].time.model, 0.5, 1e-12);
 }
+
+// The per-line table keeps times only: the top blocks' program and N come from the block on
+// the line (a subprogram's line run three times, then the main program's).
+TEST(TimeReport, TopBlocksNameTheirProgramAndN) {
+  auto r =
+      run("O1\nN10 G90 G21 G94 G01 X10. F600.\nM98 P100 L3\nM30\nO100\nN20 G91 G01 X20. "
+          "F600.\nX1.\nM99\n",
+          defaultSetup());
+  const auto& top = r.state["timing"]["top_blocks"];
+  ASSERT_GE(top.size(), 3u);
+  EXPECT_EQ(top[0]["line"], 6);
+  EXPECT_EQ(top[0]["prog"], "O0100");
+  EXPECT_EQ(top[0]["n"], 20);
+  EXPECT_EQ(top[0]["count"], 3);
+  EXPECT_NEAR(top[0]["time"].get<double>(), 6.0, 1e-12);
+  EXPECT_EQ(top[1]["line"], 2);
+  EXPECT_EQ(top[1]["prog"], "O0001");
+  EXPECT_EQ(top[1]["n"], 10);
+  EXPECT_EQ(top[1]["count"], 1);
+  EXPECT_EQ(top[2]["line"], 7);
+  EXPECT_TRUE(top[2]["n"].is_null());
+}

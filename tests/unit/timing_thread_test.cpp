@@ -1,0 +1,180 @@
+// The time stage on a worker thread (src/timing/timing_thread) against the same run on the
+// control's thread: the same trace bytes, the same state (times, alarms, where they came),
+// and a sink's exception on the worker ending the run.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <thread>
+
+#include "app/session.hpp"
+#include "core/alarm.hpp"
+#include "report/trace_writer.hpp"
+
+using namespace ncvm;
+
+namespace {
+
+// A CAM-like program with everything the stage holds or stops at: a raster of short
+// segments with arcs, rapids, M codes, a tool change, a dwell, operation comments, a
+// message, an offset write and G96 on a lathe-like feed.
+std::string mixedProgram(int lines) {
+  std::string s =
+      "O0003\nG90 G21 G17 G94\n(ROUGH)\nT1 M06\nS8000 M03\nG00 X0 Y0 Z5.\nG01 Z0 F3000.\n";
+  const int perRow = 200;
+  for (int k = 0; k < lines; ++k) {
+    int row = k / perRow, col = k % perRow;
+    double x = (row % 2 ? perRow - col : col) * 0.2, y = row * 0.5;
+    double z = -1.0 + 0.5 * std::sin(x * 0.05) * std::cos(y * 0.07);
+    if (col % 25 == 12)
+      s += fmt::format("G{} X{:.3f} Y{:.3f} Z{:.3f} R5.\n", (k / 25) % 2 ? 2 : 3, x, y, z);
+    else if (col % 25 == 13)
+      s += fmt::format("G1 X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
+    else
+      s += fmt::format("X{:.3f} Y{:.3f} Z{:.3f}\n", x, y, z);
+    if (col == perRow - 1) {
+      s += fmt::format("(ROW {})\nG00 Z5.\nM08\nG04 X0.2\n#3006=1 (NEXT ROW)\n", row);
+      s += fmt::format("G10 L2 P1 X{:.1f}\nG00 X{:.3f} Y{:.3f}\nG01 Z0 F3000.\n", 0.0, x, y + 0.5);
+    }
+  }
+  s += "G00 Z50.\nM05\nM30\n";
+  return s;
+}
+
+struct Outcome {
+  std::string trace;
+  std::string state;
+  bool threaded = false;
+};
+
+Outcome runWith(const Setup& setup, const std::string& text, int threads, bool trace,
+                uint64_t maxTrace = 1ull << 30) {
+  Session s(setup);
+  s.setTimingThreads(threads);
+  s.addProgramText(text, "t.nc");
+  TraceWriter writer(s.files(), nullptr, maxTrace, s.setup().reportedAxes());
+  Session::Result r = s.run(trace ? &writer : nullptr);
+  return Outcome{writer.buffer(), r.state.dump(), s.usedTimingThread()};
+}
+
+Setup withModel(bool dynamic) {
+  Setup s = defaultSetup();
+  s.timing.dynamic = dynamic;
+  return s;
+}
+
+bool twoThreads() {
+  return std::thread::hardware_concurrency() > 1;
+}
+
+}  // namespace
+
+TEST(TimingThread, SameTraceAndStateAsOnTheControlsThread) {
+  const std::string text = mixedProgram(3000);
+  for (bool dynamic : {false, true}) {
+    for (bool trace : {false, true}) {
+      Outcome sync = runWith(withModel(dynamic), text, 0, trace);
+      Outcome worker = runWith(withModel(dynamic), text, 1, trace);
+      EXPECT_FALSE(sync.threaded);
+      EXPECT_EQ(worker.threaded, twoThreads());
+      EXPECT_EQ(sync.state, worker.state) << "dynamic " << dynamic << " trace " << trace;
+      EXPECT_EQ(sync.trace, worker.trace) << "dynamic " << dynamic;
+      if (trace) {
+        EXPECT_GT(worker.trace.size(), 100000u);
+      }
+    }
+  }
+}
+
+TEST(TimingThread, SetupKeySelectsTheThread) {
+  ncvm::Setup s = withModel(true);
+  applySetting(s, "timing.threads=0");
+  EXPECT_EQ(s.timing.threads, 0);
+  EXPECT_FALSE(runWith(s, mixedProgram(10), -1, false).threaded);
+  applySetting(s, "timing.threads=1");
+  EXPECT_EQ(runWith(s, mixedProgram(10), -1, false).threaded, twoThreads());
+  EXPECT_THROW(applySetting(s, "timing.threads=2"), SetupError);
+}
+
+// The trace limit is reached at the same event with the worker as without it: the worker
+// hands the stage back to the control's thread before the events in flight could pass it.
+TEST(TimingThread, TraceLimitAtTheSameEvent) {
+  const std::string text = mixedProgram(3000);
+  for (bool dynamic : {false, true}) {
+    for (uint64_t limit : {300ull, 20000ull, 400000ull}) {
+      Outcome sync = runWith(withModel(dynamic), text, 0, true, limit);
+      Outcome worker = runWith(withModel(dynamic), text, 1, true, limit);
+      EXPECT_NE(sync.state.find("PS9006"), std::string::npos) << limit;
+      EXPECT_EQ(sync.state, worker.state) << "dynamic " << dynamic << " limit " << limit;
+      EXPECT_EQ(sync.trace, worker.trace) << "dynamic " << dynamic << " limit " << limit;
+    }
+  }
+}
+
+namespace {
+// A sink that may run on the worker and fails (as an output error would) at its nth move.
+struct FailingSink final : EventSink {
+  explicit FailingSink(int n) : failAt(n) {}
+  int failAt, moves = 0;
+  bool alarmSeen = false;
+  void onMove(const MoveEvent&) override {
+    if (++moves == failAt) throw AlarmError(AlarmId::OutputError, "test sink");
+  }
+  void onAlarm(const AlarmEvent&) override { alarmSeen = true; }
+  bool runsOnAnyThread() const override { return true; }
+};
+}  // namespace
+
+// A sink's exception on the worker stops the control at its next event with that alarm.
+TEST(TimingThread, SinkFailureEndsTheRun) {
+  const std::string text = mixedProgram(20000);
+  for (int threads : {0, 1}) {
+    Session s(withModel(true));
+    s.setTimingThreads(threads);
+    s.addProgramText(text, "t.nc");
+    FailingSink sink(1000);
+    Session::Result r = s.run(&sink);
+    ASSERT_TRUE(r.alarm) << threads;
+    EXPECT_EQ(r.alarm->code, alarmCode(AlarmId::OutputError));
+    EXPECT_EQ(r.end, EndReason::Alarm);
+    EXPECT_TRUE(sink.alarmSeen);
+    // The control ran at most the ring's capacity and the look-ahead past the failing move.
+    EXPECT_LT(r.stats.moves, 1000u + 512u + 200u) << threads;
+  }
+}
+
+// A sink that fails after the control has sent its last event: the alarm of the run.
+TEST(TimingThread, SinkFailureAfterTheLastBlock) {
+  const std::string text = mixedProgram(300);
+  for (int threads : {0, 1}) {
+    Session s(withModel(true));
+    s.setTimingThreads(threads);
+    s.addProgramText(text, "t.nc");
+    FailingSink sink(300);  // among the last moves the stage holds
+    Session::Result r = s.run(&sink);
+    ASSERT_TRUE(r.alarm) << threads;
+    EXPECT_EQ(r.alarm->code, alarmCode(AlarmId::OutputError));
+  }
+}
+
+// Sinks that read the control (the viewer's inspector) or do not say they may run anywhere
+// keep everything on the control's thread.
+TEST(TimingThread, OnlyWhereItCanBe) {
+  struct Plain final : EventSink {
+    int moves = 0;
+    void onMove(const MoveEvent&) override { ++moves; }
+  } plain;
+  Session a(withModel(true));
+  a.addProgramText(mixedProgram(50), "t.nc");
+  a.run(&plain);
+  EXPECT_FALSE(a.usedTimingThread());
+  EXPECT_GT(plain.moves, 50);
+
+  Session b(withModel(true));
+  b.addProgramText(mixedProgram(50), "t.nc");
+  bool inspected = false;
+  b.setInspector([&](Executor&) { inspected = true; });
+  b.run(nullptr);
+  EXPECT_TRUE(inspected);
+  EXPECT_FALSE(b.usedTimingThread());
+}
