@@ -38,7 +38,7 @@ struct TimingSetup {
   // Threads for the time stage and the sinks after it: 1 runs them on a worker thread beside
   // the control (src/timing/timing_thread.hpp), 0 on the control's own thread. Never changes
   // a result; the worker is used only where it can be (docs/performance.md).
-  int threads = 1;
+  int threads = 0;
 };
 
 // A [timing] value from the setup file or --set.
