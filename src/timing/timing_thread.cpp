@@ -213,36 +213,27 @@ void TimingThread::onAlarm(const AlarmEvent& e) {
   commit(r);
 }
 
+template <class E>
+void TimingThread::queueWhole(const E& e, Kind kind, E Record::*slot,
+                              void (TimingStage::*direct)(const E&)) {
+  if (!admit(e.at)) return (stage_->*direct)(e);
+  Record& r = claim();
+  r.kind = kind;
+  r.*slot = e;
+  commit(r);
+}
+
 void TimingThread::onTool(const ToolEvent& e) {
-  if (!admit(e.at)) return stage_->onTool(e);
-  Record& r = claim();
-  r.kind = Kind::Tool;
-  r.tool = e;
-  commit(r);
+  queueWhole(e, Kind::Tool, &Record::tool, &TimingStage::onTool);
 }
-
 void TimingThread::onSpindle(const SpindleEvent& e) {
-  if (!admit(e.at)) return stage_->onSpindle(e);
-  Record& r = claim();
-  r.kind = Kind::Spindle;
-  r.spindle = e;
-  commit(r);
+  queueWhole(e, Kind::Spindle, &Record::spindle, &TimingStage::onSpindle);
 }
-
 void TimingThread::onCoolant(const CoolantEvent& e) {
-  if (!admit(e.at)) return stage_->onCoolant(e);
-  Record& r = claim();
-  r.kind = Kind::Coolant;
-  r.coolant = e;
-  commit(r);
+  queueWhole(e, Kind::Coolant, &Record::coolant, &TimingStage::onCoolant);
 }
-
 void TimingThread::onAux(const AuxEvent& e) {
-  if (!admit(e.at)) return stage_->onAux(e);
-  Record& r = claim();
-  r.kind = Kind::Aux;
-  r.aux = e;
-  commit(r);
+  queueWhole(e, Kind::Aux, &Record::aux, &TimingStage::onAux);
 }
 
 void TimingThread::onOffset(const OffsetEvent& e) {

@@ -103,6 +103,10 @@ class TimingThread final : public EventSink {
   // goes straight to the stage (on this thread); computes the event's byte bound.
   bool admit(const EventOrigin& at, std::string_view t0 = {}, std::string_view t1 = {});
   Record& claim();  // the next free slot (waits while the ring is full)
+  // An event without texts of its own: copied whole into its slot of the record, or (when
+  // admit says so) handed straight to the stage.
+  template <class E>
+  void queueWhole(const E& e, Kind kind, E Record::*slot, void (TimingStage::*direct)(const E&));
   void commit(Record& r);
   void publish(bool wake = false);
   void waitHead(uint64_t target);  // until the worker has taken every event before target
