@@ -262,6 +262,36 @@ class Executor {
     AxisArray mend{}, end{};
   };
   LastEmit lastEmit_;
+  // The straight path for plain G01 blocks (straight_move.cpp) and what it keeps between
+  // blocks: the stroke limits as nanometre bounds per unit (the same test as checkStroke's)
+  // and the one event it fills in place.
+  bool straightMove(const Block& b);
+  // Per unit (mm, inch), each axis's constants as lengthNm, toProgramUnits and emitMove use
+  // them, and its stroke limits as nanometre bounds (the same test as checkStroke's).
+  struct StraightAxes {
+    bool valid = false;
+    struct Axis {
+      bool present = false, diameter = false;
+      int64_t perIncrement = 0, nmPerIncrement = 0, lo = 0, hi = 0;
+      double per = 1, dia = 1;
+    };
+    std::array<Axis, kMaxAxes> axis{};
+  };
+  const StraightAxes& straightAxes(bool inch) {
+    const StraightAxes& t = straightAxes_[inch ? 1 : 0];
+    return t.valid ? t : fillStraightAxes(inch);
+  }
+  const StraightAxes& fillStraightAxes(bool inch);
+  std::array<StraightAxes, 2> straightAxes_{};
+  MoveEvent straight_;
+  // Where the axes after Z were (and their offsets, the unit) when straight_ and lastEmit_'s
+  // slots for them were last filled; lastEmitTail_ is cleared when emitMove writes lastEmit_.
+  struct StraightTail {
+    bool valid = false, inch = false;
+    std::array<int64_t, kMaxAxes - 3> machine{}, offset{};
+  };
+  StraightTail straightTail_;
+  bool lastEmitTail_ = false;
   double effectiveFeed();
   void dwell(const Words& w);
   void referenceReturn(const Words& w, int which);

@@ -226,6 +226,7 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
     e.end[s] = static_cast<double>(toMachine[s] - offset_[s]) / per * dia;
   }
   lastEmit_.valid = true;
+  lastEmitTail_ = false;  // the straight path refills its slots after Z
   lastEmit_.inch = inch;
   lastEmit_.toMachine = toMachine;
   lastEmit_.offset = offset_;

@@ -267,6 +267,7 @@ bool Executor::plainMotion(Words& w) {
 }
 
 void Executor::execNc(const Block& b) {
+  if ((b.flags & kPlainBlock) && straightMove(b)) return;
   Words w;
   if (b.flags & kPlainBlock) {
     gatherPlainWords(b, w);

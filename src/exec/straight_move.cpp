@@ -1,0 +1,246 @@
+// The straight path for the bulk of a CAM program: a plain block (compiler flag kPlainBlock:
+// literal G00-G03 X Y Z F I J K R words) that is a G01 move on a mill in the plainest modal
+// state. It does exactly what plainMotion -> moveTo -> emitMove do for such a block, with the
+// same doubles in the same order, but reads the compiled words directly, converts only the
+// three axes that can move, checks the stroke against limits precomputed in nanometres, and
+// reuses one MoveEvent instead of building a 680-byte one per move. Anything else (another G
+// code, an arc, a rapid, I J K R, a mode it does not cover) returns false before it changes
+// anything, and the general path runs the block.
+#include <cmath>
+#include <limits>
+
+#include "exec/executor.hpp"
+#include "exec/straight_path.hpp"
+#include "motion/cutter_comp.hpp"
+
+namespace ncvm {
+
+namespace {
+// The exact test checkStroke makes for one axis, in the same arithmetic.
+bool overMax(const AxisConfig& a, int64_t nm, bool inch) {
+  const double per =
+      a.rotary ? 1e6 : (inch ? static_cast<double>(kNmPerInch) : static_cast<double>(kNmPerMm));
+  double pos = static_cast<double>(nm) / per;
+  if (a.diameter) pos *= 2.0;
+  const double unit = (inch && !a.rotary) ? 25.4 : 1.0;
+  return pos * unit > a.max + 1e-9;
+}
+bool underMin(const AxisConfig& a, int64_t nm, bool inch) {
+  const double per =
+      a.rotary ? 1e6 : (inch ? static_cast<double>(kNmPerInch) : static_cast<double>(kNmPerMm));
+  double pos = static_cast<double>(nm) / per;
+  if (a.diameter) pos *= 2.0;
+  const double unit = (inch && !a.rotary) ? 25.4 : 1.0;
+  return pos * unit < a.min - 1e-9;
+}
+
+// The test is monotonic in nm (a division and a multiplication by positive constants, each
+// correctly rounded), so it holds exactly beyond one threshold: found from an estimate by
+// stepping until the test flips (a few steps: as many as nanometres share one double there).
+// Limits beyond 4e12 mm (or NaN) are treated as never reached: positions that far overflow the
+// nanometre arithmetic anyway.
+constexpr int64_t kFar = int64_t{4'000'000'000'000'000'000};
+int64_t highestAllowed(const AxisConfig& a, bool inch) {
+  if (!(std::fabs(a.max) < 4e12)) return a.max > 0 ? kFar : -kFar;  // NaN: the test never trips
+  const double nmPerUnit = 1e6;                                     // limits are in mm / deg
+  int64_t t = static_cast<int64_t>(std::floor(a.max * nmPerUnit / (a.diameter ? 2.0 : 1.0)));
+  while (overMax(a, t, inch)) --t;
+  while (!overMax(a, t + 1, inch)) ++t;
+  return t;
+}
+int64_t lowestAllowed(const AxisConfig& a, bool inch) {
+  if (!(std::fabs(a.min) < 4e12)) return a.min < 0 ? -kFar : kFar;
+  const double nmPerUnit = 1e6;
+  int64_t t = static_cast<int64_t>(std::ceil(a.min * nmPerUnit / (a.diameter ? 2.0 : 1.0)));
+  while (underMin(a, t, inch)) ++t;
+  while (!underMin(a, t - 1, inch)) --t;
+  return t;
+}
+}  // namespace
+
+const Executor::StraightAxes& Executor::fillStraightAxes(bool inch) {
+  StraightAxes& t = straightAxes_[inch ? 1 : 0];
+  const InputUnit unit = inch ? InputUnit::Inch : InputUnit::Mm;
+  for (size_t k = 0; k < kMaxAxes; ++k) {
+    const AxisConfig& a = setup_.axes[k];
+    StraightAxes::Axis& x = t.axis[k];
+    x.present = a.present;
+    x.diameter = a.diameter;
+    // lengthNm: a rotary axis counts in degrees whatever the unit.
+    x.perIncrement = incrementsPerUnit(setup_.increment, a.rotary ? InputUnit::Mm : unit);
+    x.nmPerIncrement = (a.rotary || !inch) ? nmPerIncMm_[k] : nmPerIncInch_[k];
+    // toProgramUnits / emitMove: the divisor and the diameter factor.
+    x.per =
+        a.rotary ? 1e6 : (inch ? static_cast<double>(kNmPerInch) : static_cast<double>(kNmPerMm));
+    x.dia = a.diameter ? 2.0 : 1.0;
+    if (!a.present) {
+      x.lo = -kFar * 2, x.hi = kFar * 2;  // checkStroke skips the axis
+    } else {
+      x.hi = highestAllowed(a, inch);
+      x.lo = lowestAllowed(a, inch);
+    }
+  }
+  t.valid = true;
+  return t;
+}
+
+bool straightPathEnabled = true;
+uint64_t straightPathMoves = 0;
+
+bool Executor::straightMove(const Block& b) {
+  if (!straightPathEnabled) return false;
+  // The modal state plainMotion requires, and none of what emitMove would add to the event.
+  if (lathe_ || modal_.g[7] != 400 || modal_.g[9] != 800 || modal_.g[17] != 150 ||
+      !modalCalls_.empty() || xf_.active() || cornerHold_ || crcCorner_ || !pending_.empty() ||
+      (crc_ && crc_->active()) || modal_.css || programmedEnd_ || noseEnd_ || threadMove_)
+    return false;
+  const Word* words = frames_.back().prog->words.data() + b.firstWord;
+  int code = -1;
+  const Word* axis[3] = {nullptr, nullptr, nullptr};
+  const Word* feed = nullptr;
+  for (uint32_t k = 0; k < b.nWords; ++k) {
+    const Word& wd = words[k];
+    switch (wd.letter) {
+      case 'G':
+        code = static_cast<int>(wd.value * 10.0);
+        break;
+      case 'X':
+        axis[0] = &wd;
+        break;
+      case 'Y':
+        axis[1] = &wd;
+        break;
+      case 'Z':
+        axis[2] = &wd;
+        break;
+      case 'F':
+        feed = &wd;
+        break;
+      default:
+        return false;  // I J K R: the general path decides what they mean
+    }
+  }
+  const GCodeInfo* info = nullptr;
+  if (code >= 0) {
+    if (code != 10 || gCall_[1] > 0) return false;
+    info = gInfo(code);
+    if (!info || info->status == GStatus::NotYet || info->group != 1) return false;
+  } else if (modal_.motion != 10) {
+    return false;
+  }
+  if (!((axis[0] && setup_.axes[0].present) || (axis[1] && setup_.axes[1].present) ||
+        (axis[2] && setup_.axes[2].present)))
+    return false;  // F alone or an absent axis: rare, the general path
+
+  // From here on this is the block's execution (plainMotion, moveTo, emitMove in order).
+  if (info) applyModalG(code, *info);
+  deriveModal();
+  exactStop_ = modal_.g[15] == 610;
+  if (feed) {
+    double fv = feed->value;
+    if (fv < 0) throw AlarmError(AlarmId::IllegalMinus, "F");
+    if (!(feed->flags & kHasPoint) && !dpi_ && modal_.feedPerRev)
+      fv *= leastIncrement(setup_.increment, modal_.unit);
+    modal_.feed = fv;
+  }
+  const bool inch = modal_.unit == InputUnit::Inch;
+  const StraightAxes& ax = straightAxes(inch);
+  // X Y Z move; the axes after them stay where they are (their target is where they are).
+  constexpr size_t kXyz = 3;
+  int64_t target[kXyz], toM[kXyz];
+  bool over = false;
+  for (size_t k = 0; k < kXyz; ++k) {
+    const StraightAxes::Axis& a = ax.axis[k];
+    int64_t t = machine_[k] - offset_[k];
+    if (const Word* wd = axis[k]; wd && a.present) {
+      const bool point = wd->flags & kHasPoint;
+      const int64_t inc = (!point && !dpi_) ? roundHalfAway(wd->value)
+                                            : roundToIncrements(wd->value, a.perIncrement);
+      int64_t nm = inc * a.nmPerIncrement;
+      if (a.diameter) nm /= 2;
+      t = modal_.incremental ? t + nm : nm;
+    }
+    target[k] = t;
+    toM[k] = t + offset_[k];
+    over |= toM[k] > a.hi || toM[k] < a.lo;
+  }
+  for (size_t k = 0; k < kXyz; ++k) programmed_[k] = target[k];
+  for (size_t k = kXyz; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+
+  // The other axes' part of the event (and of lastEmit_) depends only on where they are, their
+  // offsets and the unit: filled and stroke-checked again only when one of those changed.
+  const bool tailSame =
+      straightTail_.valid && straightTail_.inch == inch &&
+      straightTail_.machine[0] == machine_[3] && straightTail_.machine[1] == machine_[4] &&
+      straightTail_.machine[2] == machine_[5] && straightTail_.offset[0] == offset_[3] &&
+      straightTail_.offset[1] == offset_[4] && straightTail_.offset[2] == offset_[5];
+  for (size_t k = kXyz; !tailSame && k < kMaxAxes; ++k)
+    over |= machine_[k] > ax.axis[k].hi || machine_[k] < ax.axis[k].lo;
+  if (over) {
+    std::array<int64_t, kMaxAxes> all = machine_;
+    for (size_t k = 0; k < kXyz; ++k) all[k] = toM[k];
+    checkStroke(all);  // throws the alarm
+  }
+
+  MoveEvent& e = straight_;
+  e.mode = MoveMode::Linear;
+  e.feed = effectiveFeed();
+  if (!tailSame || !lastEmitTail_) {
+    for (size_t s = kXyz; s < kMaxAxes; ++s) {
+      const double p = ax.axis[s].per, d = ax.axis[s].dia;
+      e.mstart[s] = e.mend[s] = lastEmit_.mend[s] = static_cast<double>(machine_[s]) / p * d;
+      e.start[s] = e.end[s] = lastEmit_.end[s] =
+          static_cast<double>(machine_[s] - offset_[s]) / p * d;
+      lastEmit_.toMachine[s] = machine_[s];
+      lastEmit_.offset[s] = offset_[s];
+      straightTail_.machine[s - kXyz] = machine_[s];
+      straightTail_.offset[s - kXyz] = offset_[s];
+    }
+    straightTail_.valid = true;
+    straightTail_.inch = inch;
+    lastEmitTail_ = true;
+  }
+  // emitMove's test whether the last end is this start (the other axes agree by the above).
+  const bool same = lastEmit_.valid && lastEmit_.inch == inch &&
+                    lastEmit_.toMachine[0] == machine_[0] &&
+                    lastEmit_.toMachine[1] == machine_[1] &&
+                    lastEmit_.toMachine[2] == machine_[2] && lastEmit_.offset[0] == offset_[0] &&
+                    lastEmit_.offset[1] == offset_[1] && lastEmit_.offset[2] == offset_[2];
+  // One pass per axis: the length (toProgramUnits of the difference, summed in axis order; the
+  // other axes add 0), the event's coordinates as emitMove converts them, the bookkeeping.
+  double sq = 0;
+  for (size_t s = 0; s < kXyz; ++s) {
+    const double p = ax.axis[s].per, d = ax.axis[s].dia;
+    const double diff = static_cast<double>(toM[s] - machine_[s]) / p;
+    sq += diff * diff;
+    if (same) {
+      e.mstart[s] = lastEmit_.mend[s];
+      e.start[s] = lastEmit_.end[s];
+    } else {
+      e.mstart[s] = static_cast<double>(machine_[s]) / p * d;
+      e.start[s] = static_cast<double>(machine_[s] - offset_[s]) / p * d;
+    }
+    e.mend[s] = lastEmit_.mend[s] = static_cast<double>(toM[s]) / p * d;
+    e.end[s] = lastEmit_.end[s] = static_cast<double>(toM[s] - offset_[s]) / p * d;
+    lastEmit_.toMachine[s] = toM[s];
+    lastEmit_.offset[s] = offset_[s];
+    machine_[s] = toM[s];
+  }
+  e.length = std::sqrt(sq);
+  e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+  e.at = origin_;
+  e.exactStop = exactStop_;
+  e.inch = inch;
+  e.perRev = modal_.feedPerRev ? modal_.feed : 0;
+  lastEmit_.valid = true;
+  lastEmit_.inch = inch;
+  ++stats_.moves;
+  stats_.feedLength += e.length;
+  advanceTime(e.time);
+  sink().onMove(e);
+  ++frames_.back().pc;
+  ++straightPathMoves;
+  return true;
+}
+
+}  // namespace ncvm

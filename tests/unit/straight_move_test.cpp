@@ -1,0 +1,145 @@
+// The executor's straight path for plain G01 blocks (src/exec/straight_move.cpp) against the
+// general path it bypasses: the same programs on the same setups, run with the path on and
+// off, give the same trace and state byte for byte, alarms included.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "app/session.hpp"
+#include "exec/straight_path.hpp"
+#include "report/trace_writer.hpp"
+
+using namespace ncvm;
+
+namespace {
+
+struct Outcome {
+  std::string trace, state;
+  uint64_t straight = 0;  // blocks the straight path ran
+};
+
+Outcome run(const ncvm::Setup& setup, const std::string& text, bool straight) {
+  straightPathEnabled = straight;
+  const uint64_t before = straightPathMoves;
+  Session s(setup);
+  s.addProgramText(text, "t.nc");
+  TraceWriter writer(s.files(), nullptr, uint64_t{1} << 30, s.setup().reportedAxes());
+  Session::Result r = s.run(&writer);
+  straightPathEnabled = true;
+  return Outcome{writer.buffer(), r.state.dump(), straightPathMoves - before};
+}
+
+void expectSame(const ncvm::Setup& setup, const std::string& text, const std::string& what,
+                bool straightRuns = true) {
+  const Outcome fast = run(setup, text, true), general = run(setup, text, false);
+  EXPECT_EQ(fast.state, general.state) << what;
+  EXPECT_EQ(fast.trace, general.trace) << what;
+  if (straightRuns) {
+    EXPECT_GT(fast.straight, 0u) << what;
+  }
+  EXPECT_EQ(general.straight, 0u) << what;
+}
+
+ncvm::Setup fromToml(const std::string& toml) {
+  return parseSetup(toml, "straight.toml");
+}
+
+// Plain blocks in every state the straight path must either take exactly or leave alone:
+// offsets and their changes, G91, no-point values, F with and without a point, G61, feed per
+// revolution, rotary axes moved by other blocks, comments, N numbers, block skip, macro
+// writes of the work offset, arcs and rapids in between.
+const char* kStates =
+    "O0001\n"
+    "G90 G21 G17 G40 G49 G80 G54 G94\n"
+    "G10 L2 P1 X100. Y50. Z-20.\n"
+    "G10 L2 P2 X-30.5 Y12.25 Z3.\n"
+    "G10 L10 P1 R50.\n"
+    "S1000 M03\n"
+    "G00 X0 Y0 Z5.\n"
+    "G01 Z0 F3000.\n"
+    "X10.5 Y3.25 Z-1.\n"
+    "X11 Y4\n"                   // no point: increments
+    "N100 X12.001 Y4.5 F2500\n"  // F without a point
+    "/X13. Y5.\n"
+    "G1 X14.123 Y-6.789 Z-2.5\n"
+    "(OPERATION TWO)\n"
+    "G55\n"
+    "X1. Y2. Z3.\n"
+    "X1.5 Y2.5\n"
+    "#5221=7.5\n"
+    "X2. Y3.\n"
+    "G54 X2.5 Y3.5\n"
+    "G91 X1. Y-1. Z0.5\n"
+    "X0.001 Y0.002\n"
+    "G90 X20. Y20.\n"
+    "G61 X21. Y21.\n"
+    "X22. Y22.\n"
+    "G64 X23.\n"
+    "G02 X25. Y20. R5.\n"
+    "X26. Y19.\n"
+    "G01 X27. Y18.\n"
+    "G00 X30. Y10.\n"
+    "G01 X31. Y11. F1500.\n"
+    "G43 H1 Z10.\n"
+    "X32. Y12. Z9.\n"
+    "G49 Z20.\n"
+    "X33.\n"
+    "G92 X0 Y0\n"
+    "X1. Y1.\n"
+    "G52 X5. Y5.\n"
+    "X2. Y2.\n"
+    "G52 X0 Y0\n"
+    "G95 F0.1\n"
+    "X3. Y3.\n"
+    "F.2 X4. Y4.\n"
+    "G94 F1000.\n"
+    "X5. Y5.\n"
+    "M30\n";
+
+}  // namespace
+
+TEST(StraightMove, SameAsTheGeneralPathInEveryMillState) {
+  ncvm::Setup setup = defaultSetup();
+  expectSame(setup, kStates, "mill mm");
+  ncvm::Setup inch = fromToml("[machine]\nunits = \"inch\"\n");
+  expectSame(inch, kStates, "mill inch");
+  ncvm::Setup isc = fromToml("[machine]\nincrement = \"IS-C\"\n");
+  expectSame(isc, kStates, "IS-C");
+  ncvm::Setup dpi = fromToml("DPI = 1\n");
+  expectSame(dpi, kStates, "DPI");
+}
+
+TEST(StraightMove, UnitChangesAndRotaryAxesMovedByOtherBlocks) {
+  ncvm::Setup setup = fromToml("[axes.A]\nrapid = 3600\n[axes.C]\nrotary = false\n");
+  const std::string text =
+      "O0002\nG90 G21 G54\nG01 X1. Y1. F1000.\nG00 A90.\nG01 X2. Y2.\nX3. Y3. Z-1.\n"
+      "G10 L2 P1 A10. C2.\nX4.\nG01 A45. C1. X5.\nX6. Y6.\nG20\nX0.5 Y0.5\nX0.6\nG21\nX7. Y7.\n"
+      "M30\n";
+  expectSame(setup, text, "rotary and unit changes");
+}
+
+TEST(StraightMove, StrokeLimitsAlarmAtTheSameBlock) {
+  for (const char* unit : {"mm", "inch"}) {
+    ncvm::Setup setup = fromToml(fmt::format(
+        "[machine]\nunits = \"{}\"\n[axes.X]\nmin = -10.0\nmax = 25.4\n[axes.Y]\nmax = 0.001\n",
+        unit));
+    // Exactly at the limit passes; one increment beyond alarms.
+    expectSame(setup, "O0003\nG90 G01 F100.\nX1.\nX1.0000\nY0.001\nX25.4\nX25.401\nM30\n",
+               std::string("at the limit, ") + unit);
+    expectSame(setup, "O0003\nG90 G20 G01 F10.\nX1.\nX0.9999\nX1.0001\nM30\n",
+               std::string("inch limit, ") + unit);
+    expectSame(setup,
+               "O0003\nG90 G01 F100.\nX-0.39\nX-0.3937\nX-0.3938\nX-9.999\nX-10.\nX-10.001\nM30\n",
+               std::string("min limit, ") + unit);
+  }
+}
+
+TEST(StraightMove, FeedAlarmsAndMissingAxes) {
+  ncvm::Setup setup = defaultSetup();
+  expectSame(setup, "O0004\nG90 G00 X1.\nG01 X2. Y2.\nM30\n", "no F", false);
+  expectSame(setup, "O0004\nG90\nG01 F100. X1.\nX2. F-5.\nM30\n", "negative F");
+  ncvm::Setup noY = fromToml("[axes.Y]\npresent = false\n");
+  expectSame(noY, "O0004\nG90 G01 F100. X1.\nX2. Z1.\nZ2.\nM30\n", "no Y axis");
+}
