@@ -133,8 +133,11 @@ bool Executor::straightMove(const Block& b) {
     return false;  // F alone or an absent axis: rare, the general path
 
   // From here on this is the block's execution (plainMotion, moveTo, emitMove in order).
-  if (info) applyModalG(code, *info);
-  deriveModal();
+  // modal_'s derived fields follow its G codes after every block: only a G word changes them.
+  if (info) {
+    applyModalG(code, *info);
+    deriveModal();
+  }
   exactStop_ = modal_.g[15] == 610;
   if (feed) {
     double fv = feed->value;
@@ -236,8 +239,9 @@ bool Executor::straightMove(const Block& b) {
   lastEmit_.inch = inch;
   ++stats_.moves;
   stats_.feedLength += e.length;
-  advanceTime(e.time);
-  sink().onMove(e);
+  simTime_ += e.time;  // advanceTime
+  stats_.time += e.time;
+  realSink_.onMove(e);  // sink(): nothing is deferred without compensation
   ++frames_.back().pc;
   ++straightPathMoves;
   return true;
