@@ -266,6 +266,15 @@ class Executor {
   // blocks: the stroke limits as nanometre bounds per unit (the same test as checkStroke's)
   // and the one event it fills in place.
   bool straightMove(const Block& b);
+  // What straightMove read of the block's words (nullptr: not given).
+  struct StraightWords {
+    int code = -1, motion = 10;  // G code x10 in the block (-1: none); the motion it gives
+    const GCodeInfo* info = nullptr;
+    const Word* axis[3] = {nullptr, nullptr, nullptr};  // X Y Z
+    const Word *feed = nullptr, *i = nullptr, *j = nullptr, *r = nullptr;
+  };
+  template <bool Arc>
+  bool straightBlock(const StraightWords& w);
   // Per unit (mm, inch), each axis's constants as lengthNm, toProgramUnits and emitMove use
   // them, and its stroke limits as nanometre bounds (the same test as checkStroke's).
   struct StraightAxes {

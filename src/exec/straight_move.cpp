@@ -1,13 +1,17 @@
 // The straight path for the bulk of a CAM program: a plain block (compiler flag kPlainBlock:
-// literal G00-G03 X Y Z F I J K R words) that is a G01 move on a mill in the plainest modal
-// state. It does exactly what plainMotion -> moveTo -> emitMove do for such a block, with the
-// same doubles in the same order, but reads the compiled words directly, converts only the
-// three axes that can move, checks the stroke against limits precomputed in nanometres, and
-// reuses one MoveEvent instead of building a 680-byte one per move. Anything else (another G
-// code, an arc, a rapid, I J K R, a mode it does not cover) returns false before it changes
-// anything, and the general path runs the block.
+// literal G00-G03 X Y Z F I J K R words) that is a G01 move, or a G02/G03 arc in G17 with R or
+// I/J, on a mill in the plainest modal state. It does exactly what plainMotion -> moveTo /
+// plannedBlock -> arcCenter -> arcWithCenter -> emitMove do for such a block, with the same
+// doubles in the same order and the same alarms, but reads the compiled words directly,
+// converts only the three axes that can move, checks the stroke against limits precomputed in
+// nanometres, and reuses one MoveEvent instead of building a 680-byte one per move. Anything
+// else (a rapid, K, G18/G19 arcs, a zero-length R arc, a mode it does not cover) returns
+// false before it changes anything, and the general path runs the block.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "exec/executor.hpp"
 #include "exec/straight_path.hpp"
@@ -16,6 +20,8 @@
 namespace ncvm {
 
 namespace {
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
 // The exact test checkStroke makes for one axis, in the same arithmetic.
 bool overMax(const AxisConfig& a, int64_t nm, bool inch) {
   const double per =
@@ -98,6 +104,7 @@ bool Executor::straightMove(const Block& b) {
   int code = -1;
   const Word* axis[3] = {nullptr, nullptr, nullptr};
   const Word* feed = nullptr;
+  const Word *wi = nullptr, *wj = nullptr, *wr = nullptr;
   for (uint32_t k = 0; k < b.nWords; ++k) {
     const Word& wd = words[k];
     switch (wd.letter) {
@@ -116,23 +123,77 @@ bool Executor::straightMove(const Block& b) {
       case 'F':
         feed = &wd;
         break;
+      case 'I':
+        wi = &wd;
+        break;
+      case 'J':
+        wj = &wd;
+        break;
+      case 'R':
+        wr = &wd;
+        break;
       default:
-        return false;  // I J K R: the general path decides what they mean
+        return false;  // K: the general path decides what it means
     }
   }
   const GCodeInfo* info = nullptr;
   if (code >= 0) {
-    if (code != 10 || gCall_[1] > 0) return false;
+    if ((code != 10 && code != 20 && code != 30) || gCall_[static_cast<size_t>(code / 10)] > 0)
+      return false;
     info = gInfo(code);
     if (!info || info->status == GStatus::NotYet || info->group != 1) return false;
-  } else if (modal_.motion != 10) {
-    return false;
   }
-  if (!((axis[0] && setup_.axes[0].present) || (axis[1] && setup_.axes[1].present) ||
-        (axis[2] && setup_.axes[2].present)))
-    return false;  // F alone or an absent axis: rare, the general path
+  const int motion = code >= 0 ? code : modal_.motion;
+  const bool arc = motion == 20 || motion == 30;
+  if (arc) {
+    // G18/G19 arcs, and an arc without R, I or J (its alarm): the general path.
+    if (modal_.plane != 17 || !(wr || wi || wj)) return false;
+  } else if (motion != 10 || wi || wj || wr) {
+    return false;  // a rapid, or I J R in a G01 block: the general path
+  }
+  const bool anyAxis = (axis[0] && setup_.axes[0].present) || (axis[1] && setup_.axes[1].present) ||
+                       (axis[2] && setup_.axes[2].present);
+  // F alone, an absent axis, an arc with nothing but R: rare, the general path.
+  if (!anyAxis && !(arc && (wi || wj))) return false;
 
-  // From here on this is the block's execution (plainMotion, moveTo, emitMove in order).
+  StraightWords w{code, motion, info, {axis[0], axis[1], axis[2]}, feed, wi, wj, wr};
+  return arc ? straightBlock<true>(w) : straightBlock<false>(w);
+}
+
+// The block itself, from its targets to the event: one instance for G01 and one for arcs, so
+// that the G01 blocks, nearly all of a program, are compiled without the arc's code around.
+template <bool Arc>
+bool Executor::straightBlock(const StraightWords& w) {
+  const Word* const* axis = w.axis;
+  const Word *feed = w.feed, *wi = w.i, *wj = w.j, *wr = w.r;
+  const int code = w.code, motion = w.motion;
+  const GCodeInfo* info = w.info;
+  constexpr bool arc = Arc;
+  // The targets (plainTargets) come first: the block's G code (group 1) cannot change the unit
+  // or G90/G91, and computing them changes nothing, so an arc the general path must take can
+  // still be refused here.
+  const bool inch = modal_.unit == InputUnit::Inch;
+  const StraightAxes& ax = straightAxes(inch);
+  constexpr size_t kXyz = 3;
+  int64_t start[kXyz], target[kXyz], toM[kXyz];
+  for (size_t k = 0; k < kXyz; ++k) {
+    const StraightAxes::Axis& a = ax.axis[k];
+    int64_t t = start[k] = machine_[k] - offset_[k];
+    if (const Word* wd = axis[k]; wd && a.present) {
+      const bool point = wd->flags & kHasPoint;
+      const int64_t inc = (!point && !dpi_) ? roundHalfAway(wd->value)
+                                            : roundToIncrements(wd->value, a.perIncrement);
+      int64_t nm = inc * a.nmPerIncrement;
+      if (a.diameter) nm /= 2;
+      t = modal_.incremental ? t + nm : nm;
+    }
+    target[k] = t;
+  }
+  // plannedBlock's zero-length R arc (no movement in the plane) becomes a G01 there.
+  if constexpr (Arc)
+    if (wr && target[0] == start[0] && target[1] == start[1]) return false;
+
+  // From here on this is the block's execution, in the general path's order.
   // modal_'s derived fields follow its G codes after every block: only a G word changes them.
   if (info) {
     applyModalG(code, *info);
@@ -146,29 +207,79 @@ bool Executor::straightMove(const Block& b) {
       fv *= leastIncrement(setup_.increment, modal_.unit);
     modal_.feed = fv;
   }
-  const bool inch = modal_.unit == InputUnit::Inch;
-  const StraightAxes& ax = straightAxes(inch);
-  // X Y Z move; the axes after them stay where they are (their target is where they are).
-  constexpr size_t kXyz = 3;
-  int64_t target[kXyz], toM[kXyz];
-  bool over = false;
-  for (size_t k = 0; k < kXyz; ++k) {
-    const StraightAxes::Axis& a = ax.axis[k];
-    int64_t t = machine_[k] - offset_[k];
-    if (const Word* wd = axis[k]; wd && a.present) {
+  MoveEvent& e = straight_;
+  if constexpr (Arc) {
+    double cu0 = 0, cv0 = 0;
+    // arcCenter in G17 (u = X, v = Y): lengthNm of R, I and J with X's and Y's increments.
+    auto lengthNmOf = [&](const Word* wd, size_t slot) {
+      const StraightAxes::Axis& a = ax.axis[slot];
       const bool point = wd->flags & kHasPoint;
       const int64_t inc = (!point && !dpi_) ? roundHalfAway(wd->value)
                                             : roundToIncrements(wd->value, a.perIncrement);
-      int64_t nm = inc * a.nmPerIncrement;
-      if (a.diameter) nm /= 2;
-      t = modal_.incremental ? t + nm : nm;
+      return inc * a.nmPerIncrement;
+    };
+    const bool cw = motion == 20;
+    const double su = static_cast<double>(start[0]), sv = static_cast<double>(start[1]);
+    const double eu = static_cast<double>(target[0]), ev = static_cast<double>(target[1]);
+    const double tolNm = arcTolerance_ * 1e6;
+    cu0 = su;
+    cv0 = sv;
+    if (wr) {
+      const double r = static_cast<double>(lengthNmOf(wr, 0));
+      const double du = eu - su, dv = ev - sv;
+      const double d = std::hypot(du, dv);
+      if (d != 0) {
+        double h2 = r * r - d * d / 4.0;
+        if (h2 < 0) {
+          if (d / 2.0 - std::fabs(r) > tolNm)
+            throw AlarmError(AlarmId::OverToleranceOfRadius, "R smaller than half the chord");
+          h2 = 0;
+        }
+        const double h = std::sqrt(h2);
+        const double pu = -dv / d, pv = du / d;  // left of the chord
+        const double side = (cw ? -1.0 : 1.0) * (r < 0 ? -1.0 : 1.0);
+        cu0 = (su + eu) / 2.0 + side * h * pu;
+        cv0 = (sv + ev) / 2.0 + side * h * pv;
+      }
+    } else {
+      cu0 = su + (wi ? static_cast<double>(lengthNmOf(wi, 0)) : 0.0);
+      cv0 = sv + (wj ? static_cast<double>(lengthNmOf(wj, 1)) : 0.0);
+      const double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
+      if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
+      if (std::fabs(re - rs) > tolNm)
+        throw AlarmError(AlarmId::OverToleranceOfRadius,
+                         fmt::format("end radius differs by {:.4f} mm", std::fabs(re - rs) / 1e6));
     }
-    target[k] = t;
-    toM[k] = t + offset_[k];
-    over |= toM[k] > a.hi || toM[k] < a.lo;
+    // arcWithCenter: the feed first, then the sweep and the length.
+    e.feed = effectiveFeed();
+    const double r = std::hypot(su - cu0, sv - cv0);
+    const double as = std::atan2(sv - cv0, su - cu0), ae = std::atan2(ev - cv0, eu - cu0);
+    double sweep = cw ? as - ae : ae - as;
+    const bool full = (eu == su && ev == sv);
+    while (sweep <= 0) sweep += kTwoPi;
+    while (sweep > kTwoPi) sweep -= kTwoPi;
+    if (full) sweep = kTwoPi;
+    const double unitNm = inch ? 25.4e6 : 1e6;
+    const double arcLen = r * sweep / unitNm;
+    const double dz = static_cast<double>(target[2] - start[2]) / ax.axis[2].per;
+    const double lin = 0 + dz * dz;  // the axes after Z add 0
+    e.mode = cw ? MoveMode::Cw : MoveMode::Ccw;
+    e.arc = true;
+    e.plane = 17;
+    e.length = std::sqrt(arcLen * arcLen + lin);
+    e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+    const int64_t center[kXyz] = {static_cast<int64_t>(std::llround(cu0)),
+                                  static_cast<int64_t>(std::llround(cv0)), start[2]};
+    for (size_t k = 0; k < kXyz; ++k)
+      e.center[k] = static_cast<double>(center[k]) / ax.axis[k].per * ax.axis[k].dia;
   }
-  for (size_t k = 0; k < kXyz; ++k) programmed_[k] = target[k];
-  for (size_t k = kXyz; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+  for (size_t k = 0; k < kXyz; ++k) toM[k] = target[k] + offset_[k];
+  // moveTo sets the programmed position before its stroke check, arcWithCenter after it.
+  auto setProgrammed = [&] {
+    for (size_t k = 0; k < kXyz; ++k) programmed_[k] = target[k];
+    for (size_t k = kXyz; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
+  };
+  if (!arc) setProgrammed();
 
   // The other axes' part of the event (and of lastEmit_) depends only on where they are, their
   // offsets and the unit: filled and stroke-checked again only when one of those changed.
@@ -177,6 +288,8 @@ bool Executor::straightMove(const Block& b) {
       straightTail_.machine[0] == machine_[3] && straightTail_.machine[1] == machine_[4] &&
       straightTail_.machine[2] == machine_[5] && straightTail_.offset[0] == offset_[3] &&
       straightTail_.offset[1] == offset_[4] && straightTail_.offset[2] == offset_[5];
+  bool over = false;
+  for (size_t k = 0; k < kXyz; ++k) over |= toM[k] > ax.axis[k].hi || toM[k] < ax.axis[k].lo;
   for (size_t k = kXyz; !tailSame && k < kMaxAxes; ++k)
     over |= machine_[k] > ax.axis[k].hi || machine_[k] < ax.axis[k].lo;
   if (over) {
@@ -184,10 +297,14 @@ bool Executor::straightMove(const Block& b) {
     for (size_t k = 0; k < kXyz; ++k) all[k] = toM[k];
     checkStroke(all);  // throws the alarm
   }
-
-  MoveEvent& e = straight_;
-  e.mode = MoveMode::Linear;
-  e.feed = effectiveFeed();
+  if (arc) setProgrammed();
+  if constexpr (!Arc) {
+    e.mode = MoveMode::Linear;
+    e.arc = false;
+    e.plane = 17;
+    e.center = {};
+    e.feed = effectiveFeed();  // moveTo: after the stroke check
+  }
   if (!tailSame || !lastEmitTail_) {
     for (size_t s = kXyz; s < kMaxAxes; ++s) {
       const double p = ax.axis[s].per, d = ax.axis[s].dia;
@@ -209,8 +326,9 @@ bool Executor::straightMove(const Block& b) {
                     lastEmit_.toMachine[1] == machine_[1] &&
                     lastEmit_.toMachine[2] == machine_[2] && lastEmit_.offset[0] == offset_[0] &&
                     lastEmit_.offset[1] == offset_[1] && lastEmit_.offset[2] == offset_[2];
-  // One pass per axis: the length (toProgramUnits of the difference, summed in axis order; the
-  // other axes add 0), the event's coordinates as emitMove converts them, the bookkeeping.
+  // One pass per axis: the line's length (toProgramUnits of the difference, summed in axis
+  // order; the other axes add 0), the event's coordinates as emitMove converts them, the
+  // bookkeeping.
   double sq = 0;
   for (size_t s = 0; s < kXyz; ++s) {
     const double p = ax.axis[s].per, d = ax.axis[s].dia;
@@ -229,8 +347,10 @@ bool Executor::straightMove(const Block& b) {
     lastEmit_.offset[s] = offset_[s];
     machine_[s] = toM[s];
   }
-  e.length = std::sqrt(sq);
-  e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+  if constexpr (!Arc) {
+    e.length = std::sqrt(sq);
+    e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+  }
   e.at = origin_;
   e.exactStop = exactStop_;
   e.inch = inch;
@@ -246,5 +366,8 @@ bool Executor::straightMove(const Block& b) {
   ++straightPathMoves;
   return true;
 }
+
+template bool Executor::straightBlock<true>(const StraightWords&);
+template bool Executor::straightBlock<false>(const StraightWords&);
 
 }  // namespace ncvm

@@ -143,3 +143,34 @@ TEST(StraightMove, FeedAlarmsAndMissingAxes) {
   ncvm::Setup noY = fromToml("[axes.Y]\npresent = false\n");
   expectSame(noY, "O0004\nG90 G01 F100. X1.\nX2. Z1.\nZ2.\nM30\n", "no Y axis");
 }
+
+// Arcs in G17: I/J, R (short and long way), a full circle, helices, modal G02/G03, incremental,
+// inch, no-point values, and the alarms of the general path (radius tolerance, R too small,
+// the centre on the start point, no R/I/J, F missing), plus what it must leave alone (G18,
+// K, a zero-length R arc).
+TEST(StraightMove, ArcsAsTheGeneralPathCutsThem) {
+  const std::string arcs =
+      "O0005\nG90 G21 G17 G54 G94\nG10 L2 P1 X10. Y-5. Z2.\nG00 X0 Y0 Z1.\nG01 Z0 F800.\n"
+      "G02 X10. Y0 I5. J0\nG03 X0 Y0 I-5.\nX10. R5.\nG02 X0 Y0 R-5.\nG02 I5.\n"
+      "G03 X5. Y5. Z-2. I0 J5.\nG02 X10. Y0 R5.0001 F600\nG01 X12.\nG03 X14. Y2. J2.\n"
+      "X12. Y4. I-2. F700.\nG91 G02 X2. Y-2. R2.\nG03 X-2. Y2. I0 J2.\nG90\n"
+      "G02 X20000 Y0 R5000\nG18 G02 X25. Z-5. R5.\nG17\nG02 X30. Y0 Z-4. I2.5 K1.\n"
+      "G02 X30. Y0 R5.\nG01 X40. Y10.\nM30\n";
+  expectSame(defaultSetup(), arcs, "arcs mm");
+  expectSame(fromToml("[machine]\nunits = \"inch\"\n"), arcs, "arcs inch");
+  expectSame(fromToml("DPI = 1\n"), arcs, "arcs DPI");
+  ncvm::Setup setup = defaultSetup();
+  expectSame(setup, "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0 I5.2\nM30\n", "radius tolerance",
+             false);
+  expectSame(setup, "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0 R4.\nM30\n", "R too small", false);
+  expectSame(setup, "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0 I0 J0\nM30\n", "centre on start",
+             false);
+  expectSame(setup, "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0\nM30\n", "no R, I or J", false);
+  expectSame(setup, "O0006\nG90 G00 X0 Y0\nG02 X10. Y0 R5.\nM30\n", "no F", false);
+  expectSame(fromToml("[axes.X]\nmax = 8.0\n"),
+             "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0 R5.\nM30\n", "arc over travel", false);
+  expectSame(
+      setup,
+      "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0 R5.\nG02 X10. Y0 Z-1. R5.\nX20. Y0 R5.\nM30\n",
+      "zero-length R arc");
+}
