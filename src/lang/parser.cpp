@@ -9,6 +9,7 @@
 #include <string>
 
 #include "lang/address_letters.hpp"
+#include "lang/count_lines.hpp"
 #include "lang/decimal_scan.hpp"
 #include "lang/fast_block.hpp"
 #include "lang/huge_pages.hpp"
@@ -103,11 +104,7 @@ class Compiler {
     if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
-      size_t lines = 1;  // memchr skips a line in a few instructions; std::count does bytes
-      const char* const end = s_.data() + s_.size();
-      for (const char* q = s_.data();
-           (q = static_cast<const char*>(std::memchr(q, '\n', static_cast<size_t>(end - q)))); ++q)
-        ++lines;
+      const size_t lines = 1 + countNewlines(s_);
       prog_->blocks.reserve(lines);
       prog_->words.reserve(lines * 3);
       adviseHugePages(prog_->blocks.data(), prog_->blocks.capacity() * sizeof(Block));

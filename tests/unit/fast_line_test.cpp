@@ -3,12 +3,14 @@
 // field and bit for bit, for plain lines and for every line the fast path must refuse.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "lang/count_lines.hpp"
 #include "lang/decimal_scan.hpp"
 #include "lang/parser.hpp"
 
@@ -409,4 +411,16 @@ TEST(DecimalScan, EdgeCases) {
   ASSERT_TRUE(scanDecimal(t, t + 11, d));
   EXPECT_EQ(d.intDigits, 3);
   EXPECT_EQ(d.digits, 10);
+}
+
+TEST(CountNewlines, MatchesStdCount) {
+  std::mt19937 rng(11);
+  for (size_t size : {0u, 1u, 15u, 16u, 17u, 255u * 16u, 255u * 16u + 5u, 10000u, 70000u}) {
+    std::string text(size, 'x');
+    for (char& c : text) c = rng() % 3 == 0 ? '\n' : static_cast<char>(rng());
+    EXPECT_EQ(countNewlines(text), static_cast<size_t>(std::count(text.begin(), text.end(), '\n')))
+        << size;
+  }
+  EXPECT_EQ(countNewlines(std::string(5000, '\n')),
+            5000u);  // every byte: the counters must not wrap
 }
