@@ -8,6 +8,12 @@
 #include <cstring>
 #include <string>
 
+#include "lang/address_letters.hpp"
+#include "lang/count_lines.hpp"
+#include "lang/decimal_scan.hpp"
+#include "lang/fast_block.hpp"
+#include "lang/huge_pages.hpp"
+
 namespace ncvm {
 namespace {
 
@@ -20,66 +26,10 @@ bool isLower(char c) { return c >= 'a' && c <= 'z'; }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
-// Addresses that take no decimal point (fanuc-reference A.2). G is checked against the code
-// table by the executor, since G54.1 and friends are legal.
-// A switch, not strchr: this runs for every word of every block.
-bool forbidsPoint(char letter) {
-  switch (letter) {
-    case 'N':
-    case 'O':
-    case 'P':
-    case 'M':
-    case 'S':
-    case 'T':
-    case 'H':
-    case 'D':
-    case 'L':
-      return true;
-    default:
-      return false;
-  }
-}
-// Letter sets as bit masks (bit 0 = 'A'): one test per word, no strchr.
-constexpr uint32_t letterMask(const char* letters) {
-  uint32_t m = 0;
-  for (; *letters; ++letters) m |= 1u << (*letters - 'A');
-  return m;
-}
-bool inMask(char letter, uint32_t mask) {
-  return letter >= 'A' && letter <= 'Z' && ((mask >> (letter - 'A')) & 1u);
-}
-
-// Addresses whose values are lengths or angles, counted in least increments.
-bool isDimension(char letter) {
-  return inMask(letter, letterMask("XYZUVWABCIJKRQ"));
-}
-
-// The words a plain motion block may hold (Executor::plainMotion): no other letter, no
-// variable or expression, G only as G00-G03, nothing for the digit check.
-bool plainWord(const Word& w) {
-  if (w.kind != WordKind::Literal || (w.flags & kLongNumber)) return false;
-  if (w.letter == 'G') return w.value == 0 || w.value == 1 || w.value == 2 || w.value == 3;
-  return inMask(w.letter, letterMask("XYZFIJKR"));
-}
-
-// Addresses that take no sign.
-bool forbidsMinus(char letter) {
-  switch (letter) {
-    case 'G':
-    case 'M':
-    case 'N':
-    case 'O':
-    case 'S':
-    case 'T':
-    case 'L':
-    case 'H':
-    case 'D':
-    case 'P':
-      return true;
-    default:
-      return false;
-  }
-}
+using letters::forbidsMinus;
+using letters::forbidsPoint;
+using letters::isDimension;
+using letters::plainWord;
 
 // Exact powers of ten: every one up to 10^22 is a double without rounding.
 constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
@@ -122,6 +72,7 @@ class Compiler {
   bool inWhile_ = false;       // the block's WHILE is being compiled
   uint16_t ncWords_ = 0;
   bool sawHeaderComment_ = false;
+  bool hasControlFlow_ = false;  // the open program has a WHILE, END, GOTO or IF block
 
   uint32_t col() const { return static_cast<uint32_t>(i_ - lineStart_ + 1); }
   char peek(size_t k = 0) const { return i_ + k < end_ ? s_[i_ + k] : '\0'; }
@@ -140,20 +91,24 @@ class Compiler {
     if (!prog_) startProgram(-1, std::string(stem_), SourceLoc{file_, line_, 1});
     return *prog_;
   }
+  // Loops and literal GOTOs are resolved once a program is complete; a program without any
+  // (a CAM program) has nothing to resolve: every block's loopParent stays -1.
+  void finishProgram() {
+    if (prog_ && hasControlFlow_) resolveStructure(*prog_);
+    hasControlFlow_ = false;
+  }
   void startProgram(int32_t number, std::string name, SourceLoc loc) {
-    if (prog_) resolveStructure(*prog_);
+    finishProgram();
     out_.programs.emplace_back();
     prog_ = &out_.programs.back();
     if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
-      size_t lines = 1;  // memchr skips a line in a few instructions; std::count does bytes
-      const char* const end = s_.data() + s_.size();
-      for (const char* q = s_.data();
-           (q = static_cast<const char*>(std::memchr(q, '\n', static_cast<size_t>(end - q)))); ++q)
-        ++lines;
+      const size_t lines = 1 + countNewlines(s_);
       prog_->blocks.reserve(lines);
       prog_->words.reserve(lines * 3);
+      adviseHugePages(prog_->blocks.data(), prog_->blocks.capacity() * sizeof(Block));
+      adviseHugePages(prog_->words.data(), prog_->words.capacity() * sizeof(Word));
     }
     prog_->number = number;
     prog_->name = std::move(name);
@@ -219,16 +174,31 @@ ParsedFile Compiler::run() {
                      : s_.rfind('\n', firstPercent) + 1;
   }
   bool firstLine = true;
+  const char* const text = s_.data();
+  // Once a program is open, a plain line (nearly every line of a CAM program) is compiled in
+  // one pass, if a '\n' ends it (the scan stops there); the first line after a leader starts
+  // with '%' and is never plain.
+  const size_t lastNewline = s_.rfind('\n');
+  const size_t fastBefore =
+      !opt_.fastLines || lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
   while (pos < s_.size()) {
+    ++line_;
+    if (prog_ && pos < fastBefore) {
+      if (const char* e = compileFastLine(text + pos, file_, line_, opt_.maxLineLength, *prog_)) {
+        ++out_.fastLines;
+        firstLine = false;
+        pos = static_cast<size_t>(e - text) + 1;
+        continue;
+      }
+    }
     size_t nl = s_.find('\n', pos);
     size_t e = nl == std::string_view::npos ? s_.size() : nl;
-    ++line_;
     if (!firstLine || firstPercent == std::string_view::npos) lineStart_ = pos;
     firstLine = false;
     parseLine(pos, e);
     pos = e + 1;
   }
-  if (prog_) resolveStructure(*prog_);
+  finishProgram();
   return std::move(out_);
 }
 
@@ -477,6 +447,9 @@ void Compiler::commitBlock() {
   if (blk_.kind == BlockKind::Empty && blk_.n < 0 && blk_.skipLevel == 0 && blk_.comment < 0)
     return;  // nothing to keep
   if (blk_.n >= 0) p.labels.emplace_back(blk_.n, static_cast<uint32_t>(p.blocks.size()));
+  if (blk_.kind == BlockKind::While || blk_.kind == BlockKind::End ||
+      blk_.kind == BlockKind::Goto || blk_.kind == BlockKind::If)
+    hasControlFlow_ = true;
   if (blk_.kind != BlockKind::Nc && blk_.kind != BlockKind::Empty) {
     p.macroOps.push_back(ops_);
     blk_.ops = static_cast<int32_t>(p.macroOps.size() - 1);
@@ -485,38 +458,15 @@ void Compiler::commitBlock() {
 }
 
 double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
-  // The common number (CAM output, at most 19 digits): one loop over the integer digits and
-  // one over the fraction digits. When the mantissa is at most 2^53, mantissa / 10^frac is
-  // one correctly rounded division of two exact doubles, the same double from_chars returns
-  // (Clinger's fast path). Anything else is scanned again by parseNumberSlow.
+  // The common number (CAM output, at most 19 digits) in one scan (decimal_scan.hpp);
+  // anything else is scanned again by parseNumberSlow.
   const char* text = s_.data();
-  const char* p = text + i_;
-  const char* const e = text + end_;
-  auto digit = [](char c) { return static_cast<unsigned>(c - '0') < 10u; };
-  bool neg = false;
-  if (p < e && (*p == '+' || *p == '-')) neg = *p == '-', ++p;
-  const char* intBegin = p;
-  uint64_t mantissa = 0;
-  while (p < e && digit(*p)) mantissa = mantissa * 10 + static_cast<uint64_t>(*p++ - '0');
-  const char* intEnd = p;
-  const char* fracBegin = p;
-  bool point = false;
-  if (p < e && *p == '.') {
-    point = true;
-    fracBegin = ++p;
-    while (p < e && digit(*p)) mantissa = mantissa * 10 + static_cast<uint64_t>(*p++ - '0');
-  }
-  const auto intLen = intEnd - intBegin, fracLen = p - fracBegin;
-  if (intLen + fracLen > 19 || mantissa > (uint64_t{1} << 53) || (point && p < e && *p == '.'))
-    return parseNumberSlow(hasPoint, intDigits);
-  const char* lead = intBegin;
-  while (lead < intEnd && *lead == '0') ++lead;  // leading zeros do not count as digits
-  hasPoint = point;
-  intDigits = static_cast<int>(intEnd - lead);
-  i_ = static_cast<size_t>(p - text);
-  if (intLen + fracLen == 0) return 0.0;  // "X." reads as zero
-  double v = static_cast<double>(mantissa) / kPow10[fracLen];
-  return neg ? -v : v;
+  DecimalText d;
+  if (!scanDecimal(text + i_, text + end_, d)) return parseNumberSlow(hasPoint, intDigits);
+  hasPoint = d.hasPoint;
+  intDigits = d.intDigits;
+  i_ = static_cast<size_t>(d.end - text);
+  return d.value;
 }
 
 double Compiler::parseNumberSlow(bool& hasPoint, int& intDigits) {
@@ -630,7 +580,8 @@ void Compiler::parseWord() {
     if (hasPoint) w.flags |= kHasPoint;
     // 999.99999 is the smallest value that can exceed 99999999 increments (IS-C inch, 10^5 per
     // inch); smaller ones are never checked again.
-    if (std::fabs(w.value) >= 999.99999 && isDimension(letter)) w.flags |= kLongNumber;
+    if (std::fabs(w.value) >= letters::kLongNumberFrom && isDimension(letter))
+      w.flags |= kLongNumber;
   } else {
     fail(AlarmId::NoDataAfterAddress, std::string(1, letter), at);
   }

@@ -15,10 +15,14 @@ namespace ncvm {
 struct ParseOptions {
   uint32_t maxLineLength = 0;  // 0 = no limit; longer blocks become PS9004 Error blocks
   bool eightDigitO = false;    // O numbers up to 99999999 (0i-F/30i option)
+  // Plain lines through the one-pass fast path (fast_block.hpp). Tests turn it off to check
+  // that both ways compile every line to the same Program.
+  bool fastLines = true;
 };
 
 struct ParsedFile {
   std::vector<Program> programs;
+  uint32_t fastLines = 0;  // lines the fast path compiled (blank ones included)
 };
 
 // `stem` names the anonymous program of a file that has no O header.

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
+
+#include "lang/huge_pages.hpp"
 
 namespace ncvm {
 
@@ -43,10 +46,14 @@ std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
   if (size > maxFileBytes_) return addTooLarge(path, size);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("{}: cannot open", path));
-  std::string text(size, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  text.resize(static_cast<size_t>(in.gcount()));
-  return addText(text, path);
+  // Read into memory that is not zero-filled first (a std::string of `size` would be): a
+  // large CAM file is written once, by the read. Not mmap: a file truncated while it is
+  // compiled must not kill the process with SIGBUS. A file that shrank since file_size is
+  // compiled as far as it was read.
+  auto text = std::make_unique_for_overwrite<char[]>(size ? size : 1);
+  adviseHugePages(text.get(), size);
+  in.read(text.get(), static_cast<std::streamsize>(size));
+  return addText(std::string_view(text.get(), static_cast<size_t>(in.gcount())), path);
 }
 
 // A file over limits.max_file_bytes is not read: like a control whose memory is full, it
