@@ -3,39 +3,107 @@
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 
 namespace ncvm {
 
 namespace {
+// GCC's and Clang's 128-bit integer (one multiply instruction on x86-64).
+__extension__ typedef unsigned __int128 Uint128;
+
 // Two digits at a time, for the integer and fraction parts.
 constexpr char kDigits2[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
     "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
+inline void put2(char* p, uint32_t d) {
+  std::memcpy(p, kDigits2 + d * 2, 2);
+}
+
 // The digits are written backwards from the end, which is known from the digit count, so
 // they go straight to `out` (no scratch buffer and no memcpy call).
-char* writeUnsigned(char* out, uint64_t u) {
-  int digits = 1;
-  for (uint64_t t = u; t >= 10; t /= 10) ++digits;
+[[gnu::noinline]] char* writeLongUnsigned(char* out, uint64_t u) {
+  // Line numbers and feeds are below 10^7: the digit count from comparisons, no loop.
+  int digits = u < 1000 ? 3 : u < 10000 ? 4 : u < 100000 ? 5 : u < 1000000 ? 6 : 7;
+  if (u >= 10000000)
+    for (uint64_t t = u / 10000000; t != 0; t /= 10) ++digits;
   char* const end = out + digits;
   char* p = end;
   while (u >= 100) {
-    const char* d = kDigits2 + (u % 100) * 2;
+    p -= 2;
+    put2(p, static_cast<uint32_t>(u % 100));
     u /= 100;
-    *--p = d[1];
-    *--p = d[0];
   }
   if (u >= 10) {
-    const char* d = kDigits2 + u * 2;
-    *--p = d[1];
-    *--p = d[0];
+    p -= 2;
+    put2(p, static_cast<uint32_t>(u));
   } else {
     *--p = static_cast<char>('0' + u);
   }
   return end;
+}
+
+// Most integer parts of a trace number are below 100: one or two digits, inline.
+inline char* writeUnsigned(char* out, uint64_t u) {
+  if (u < 10) {
+    *out = static_cast<char>('0' + u);
+    return out + 1;
+  }
+  if (u < 100) {
+    put2(out, static_cast<uint32_t>(u));
+    return out + 2;
+  }
+  return writeLongUnsigned(out, u);
+}
+
+// The digits of a fraction come from a 57-bit fixed-point value y ~ frac / 10^k: each pair
+// is the integer part of y * 100 (jeaiii's method), a multiply and a shift instead of the
+// divisions by 10^6, 10^4 and 100. y is rounded up: the error, below 2^-57 * frac, is
+// multiplied by 100 a pair and stays below the next pair's unit to the last digit
+// (tests/unit/json_number_test.cpp checks every digit position).
+constexpr int kFixedBits = 57;
+constexpr uint64_t kFixedMask = (uint64_t{1} << kFixedBits) - 1;
+
+inline uint64_t nextPair(char* p, uint64_t y) {
+  y = (y & kFixedMask) * 100;
+  put2(p, static_cast<uint32_t>(y >> kFixedBits));
+  return y;
+}
+
+// ".ddd" for a fraction 0 < frac < 10^6 (6 digits) with its trailing zeros dropped. All six
+// digits are written, then the end moves back over the zeros: fewer steps than counting them.
+inline char* writeFraction6(char* out, uint32_t frac) {
+  *out = '.';
+  // ceil(2^57 / 10^4): y >> 57 is frac / 10^4, the first pair.
+  uint64_t y = frac * uint64_t{14411518807586};
+  put2(out + 1, static_cast<uint32_t>(y >> kFixedBits));
+  y = nextPair(out + 3, y);
+  nextPair(out + 5, y);
+  char* end = out + 7;
+  while (end[-1] == '0') --end;
+  return end;
+}
+
+// The same for 0 < frac < 10^9 (9 digits: one, then four pairs).
+inline char* writeFraction9(char* out, uint32_t frac) {
+  *out = '.';
+  // ceil(2^57 / 10^8): y >> 57 is frac / 10^8, the first digit.
+  uint64_t y = frac * uint64_t{1441151881};
+  out[1] = static_cast<char>('0' + (y >> kFixedBits));
+  y = nextPair(out + 2, y);
+  y = nextPair(out + 4, y);
+  y = nextPair(out + 6, y);
+  nextPair(out + 8, y);
+  char* end = out + 10;
+  while (end[-1] == '0') --end;
+  return end;
+}
+// fmt's shortest form, out of line: the fast paths need no stack frame for it.
+[[gnu::noinline]] char* formatShortest(char* out, double v) {
+  return fmt::format_to(out, FMT_COMPILE("{}"), v);
 }
 }  // namespace
 
@@ -61,19 +129,41 @@ char* formatDouble(char* out, double v) {
     if (static_cast<double>(n) / 1e6 == v && (mag >= 100 || (n == 0 && !std::signbit(v)))) {
       if (n < 0) *out++ = '-';
       out = writeUnsigned(out, mag / 1000000);
-      auto frac = static_cast<unsigned>(mag % 1000000);
-      if (frac != 0) {
-        int digits = 6;
-        while (frac % 10 == 0) frac /= 10, --digits;
-        *out++ = '.';
-        char* end = out + digits;
-        for (char* p = end; p != out; frac /= 10) *--p = static_cast<char>('0' + frac % 10);
-        out = end;
-      }
-      return out;
+      const auto frac = static_cast<uint32_t>(mag % 1000000);
+      return frac != 0 ? writeFraction6(out, frac) : out;
     }
   }
-  return fmt::format_to(out, FMT_COMPILE("{}"), v);
+  return formatShortest(out, v);
+}
+
+char* formatFixed(char* out, double v) {
+  static_assert(kFixedDecimals == 9, "writeFraction9 writes nine decimals");
+  // q = |v| * 10^9 rounded to the nearest integer (a tie upwards), exactly: |v| is m * 2^e
+  // with m < 2^53 and, below 10^6 < 2^20, e <= -32, so m * 10^9 < 2^83 fits 128 bits and
+  // the shift rounds it. (The same in doubles would be off by up to 0.2 near 10^6.) When v
+  // is the double nearest to a decimal d of at most nine decimals, |v - d| * 10^9 is at
+  // most 10^15 * 2^-53 < 1/2, so q is d * 10^9 and the text is d, the shortest form.
+  const double a = std::fabs(v);
+  if (!(a < 1e6) || (v == 0 && std::signbit(v))) return formatDouble(out, v);  // NaN too
+  const auto bits = std::bit_cast<uint64_t>(a);
+  const auto biased = static_cast<int>(bits >> 52);
+  const uint64_t m = (bits & ((uint64_t{1} << 52) - 1)) | (uint64_t{1} << 52);
+  // a = m / 2^(s + 32) with s >= 1. The low 32 bits of m * 10^9 cannot move a rounding
+  // that adds a whole 2^(s-1) to the rest, so they go first (one 64-bit value remains).
+  const int s = 1043 - biased;
+  uint64_t q = 0;
+  if (biased != 0 && s < 64) {  // else (subnormals too) a * 10^9 < 2^51 / 2^64: q = 0
+    const auto high = static_cast<uint64_t>((static_cast<Uint128>(m) * 1000000000u) >> 32);
+    q = (high + (uint64_t{1} << (s - 1))) >> s;
+  }
+  if (q == 0) {  // below 5 * 10^-10 in size: "0", without a sign
+    *out = '0';
+    return out + 1;
+  }
+  if (v < 0) *out++ = '-';
+  out = writeUnsigned(out, q / 1000000000);
+  const auto frac = static_cast<uint32_t>(q % 1000000000);
+  return frac != 0 ? writeFraction9(out, frac) : out;
 }
 
 }  // namespace ncvm

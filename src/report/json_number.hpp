@@ -1,6 +1,7 @@
 #pragma once
-// Fast, exact number formatting for the trace: the same text as fmt's "{}" (the shortest
-// decimal that reads back as the same double), written into a caller's buffer.
+// Fast number formatting for the trace, written into a caller's buffer: positions exactly
+// (the same text as fmt's "{}", the shortest decimal that reads back as the same double),
+// derived quantities (feed, length, time) rounded to a fixed number of decimals.
 #include <cstdint>
 
 namespace ncvm {
@@ -13,5 +14,15 @@ constexpr int kNumberChars = 32;
 // written from n directly (see json_number.cpp for why that is the shortest form).
 char* formatDouble(char* out, double v);
 char* formatInt(char* out, int64_t v);
+
+// The decimals formatFixed keeps (docs/trace-format.md: why that is enough).
+constexpr int kFixedDecimals = 9;
+
+// Writes v rounded to kFixedDecimals decimals in fixed notation, trailing zeros and a bare
+// point dropped ("0.089442719", "10", "0.00001", "0"). A value whose shortest form has at
+// most that many decimals comes out exactly as formatDouble writes it when it is not below
+// 10^-4 (fmt writes smaller ones in exponent form). |v| >= 10^6, NaN, infinities and -0 are
+// written by formatDouble.
+char* formatFixed(char* out, double v);
 
 }  // namespace ncvm

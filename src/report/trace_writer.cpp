@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cstring>
 
 #include "core/alarm.hpp"
@@ -14,12 +15,41 @@ constexpr size_t kChunk = 1 << 20;
 
 const char* moveModeName(MoveMode m) {
   switch (m) {
-    case MoveMode::Rapid: return "rapid";
-    case MoveMode::Linear: return "linear";
-    case MoveMode::Cw: return "cw";
-    case MoveMode::Ccw: return "ccw";
+    case MoveMode::Rapid:
+      return "rapid";
+    case MoveMode::Linear:
+      return "linear";
+    case MoveMode::Cw:
+      return "cw";
+    case MoveMode::Ccw:
+      return "ccw";
   }
   return "linear";
+}
+
+// The same program name as the last one: compared inline, as the names are short.
+// Eight bytes at a time, the last (overlapping) step ending at the end; shorter names four
+// (then two overlapping steps) or one at a time.
+bool sameText(const std::string& x, const std::string& y) {
+  const size_t n = x.size();
+  if (n != y.size()) return false;
+  const char* a = x.data();
+  const char* b = y.data();
+  auto same = [&](size_t at, auto word) {
+    decltype(word) u, v;
+    std::memcpy(&u, a + at, sizeof u);
+    std::memcpy(&v, b + at, sizeof v);
+    return u == v;
+  };
+  if (n >= 8) {
+    for (size_t i = 0; i + 8 < n; i += 8)
+      if (!same(i, uint64_t{})) return false;
+    return same(n - 8, uint64_t{});
+  }
+  if (n >= 4) return same(0, uint32_t{}) && same(n - 4, uint32_t{});
+  for (size_t i = 0; i < n; ++i)
+    if (a[i] != b[i]) return false;
+  return true;
 }
 
 // Length of the well-formed UTF-8 sequence at s[i], or 0 if it is not one.
@@ -58,14 +88,26 @@ void escapeInto(std::string& out, std::string_view s) {
       continue;
     }
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20) out += fmt::format("\\u{:04x}", static_cast<int>(c));
-        else out += c;
+        if (static_cast<unsigned char>(c) < 0x20)
+          out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        else
+          out += c;
     }
   }
   out += '"';
@@ -92,21 +134,28 @@ void TraceWriter::flush() {
   buf_.clear();
 }
 
-const std::string& TraceWriter::fileName(uint32_t id) {
+// The escaped names are kept with kCopySlack bytes after them, for copyText.
+std::string_view TraceWriter::fileName(uint32_t id) {
+  if (id < escapedNames_.size() && !escapedNames_[id].empty())  // the common case first
+    return {escapedNames_[id].data(), escapedNames_[id].size() - kCopySlack};
   if (id >= escapedNames_.size()) escapedNames_.resize(id + 1);
   std::string& s = escapedNames_[id];
-  if (s.empty()) escapeInto(s, files_.name(id));
-  return s;
+  if (s.empty()) {
+    escapeInto(s, files_.name(id));
+    s.append(kCopySlack, '\0');
+  }
+  return {s.data(), s.size() - kCopySlack};
 }
 
 // A program's name escaped; the same one as the event before is not escaped again.
-const std::string& TraceWriter::programName(const std::string& name) {
-  if (name != lastProgram_ || lastProgramEscaped_.empty()) {
+std::string_view TraceWriter::programName(const std::string& name) {
+  if (!sameText(name, lastProgram_) || lastProgramEscaped_.empty()) {
     lastProgram_ = name;
     lastProgramEscaped_.clear();
     escapeInto(lastProgramEscaped_, name);
+    lastProgramEscaped_.append(kCopySlack, '\0');
   }
-  return lastProgramEscaped_;
+  return {lastProgramEscaped_.data(), lastProgramEscaped_.size() - kCopySlack};
 }
 
 void TraceWriter::begin(const char* type, const EventOrigin& at) {
@@ -124,11 +173,16 @@ void TraceWriter::begin(const char* type, const EventOrigin& at) {
   buf_ += ",\"prog\":";
   if (at.programName)
     buf_ += programName(*at.programName);
-  else buf_ += "null";
+  else
+    buf_ += "null";
 }
 
 void TraceWriter::end() {
   buf_ += "}\n";
+  checkLine();
+}
+
+void TraceWriter::checkLine() {
   if (buf_.size() >= kChunk && out_) flush();
   if (written_ + buf_.size() > maxBytes_) {
     // The events the control still sends (the moves the time stage held, the alarm's
@@ -171,40 +225,58 @@ char* putAxes(char* p, std::string_view key, const double* a, int n) {
 }
 }  // namespace
 
-// begin("move", at), written into a caller's buffer (the names are at most a few kB, which
-// moveHead's caller leaves room for).
-char* TraceWriter::moveHead(char* p, const EventOrigin& at) {
+namespace {
+// Bit for bit: the text written for one double is the text for the same bits.
+bool sameValues(const AxisArray& x, const AxisArray& y, int n) {
+  uint64_t diff = 0;
+  for (int k = 0; k < n; ++k)
+    diff |= std::bit_cast<uint64_t>(x[static_cast<size_t>(k)]) ^
+            std::bit_cast<uint64_t>(y[static_cast<size_t>(k)]);
+  return diff == 0;
+}
+
+// memcpy in 16-byte steps, inline (a call to memcpy costs more than the copy of a short
+// text): it may read and write up to 15 bytes past the end, which lines_' slack allows.
+void copyText(char* to, const char* from, size_t len) {
+  for (size_t i = 0; i < len; i += 16) std::memcpy(to + i, from + i, 16);
+}
+}  // namespace
+
+// begin("move", at), written into a caller's buffer (the names are at most 2048 bytes,
+// which moveHead's caller checks).
+char* TraceWriter::moveHead(char* p, std::string_view file, std::string_view prog,
+                            const EventOrigin& at) {
   p = put(p, "{\"type\":\"move\",\"file\":");
-  const std::string& file = fileName(at.file);
-  std::memcpy(p, file.data(), file.size());
+  copyText(p, file.data(), file.size());
   p = put(p + file.size(), ",\"line\":");
-  p = formatInt(p, static_cast<int64_t>(at.line));
+  // Moves mostly come from consecutive lines: the last text plus one, when its last digit
+  // is not a 9.
+  if (at.line == lastLine_ + 1 && lineLen_ != 0 && lineText_[lineLen_ - 1] != '9') {
+    ++lineText_[lineLen_ - 1];
+  } else {
+    lineLen_ = static_cast<size_t>(formatInt(lineText_, static_cast<int64_t>(at.line)) - lineText_);
+  }
+  lastLine_ = at.line;
+  copyText(p, lineText_, lineLen_);
+  p += lineLen_;
   p = put(p, ",\"n\":");
   p = at.n >= 0 ? formatInt(p, static_cast<int64_t>(at.n)) : put(p, "null");
   p = put(p, ",\"prog\":");
-  if (!at.programName) return put(p, "null");
-  const std::string& prog = programName(*at.programName);
-  std::memcpy(p, prog.data(), prog.size());
+  if (!prog.data()) return put(p, "null");
+  copyText(p, prog.data(), prog.size());
   return p + prog.size();
 }
 
-// putAxes, taking the text from `reuse` when it holds the same values (bit for bit) and
-// keeping the text written in `save`.
-char* TraceWriter::putAxesCached(char* p, std::string_view key, const AxisArray& a, int n,
-                                 AxesText* reuse, AxesText* save) {
-  *p++ = ',';
-  *p++ = '"';
-  std::memcpy(p, key.data(), key.size());
-  p += key.size();
-  p = put(p, "\":");
-  const auto bytes = static_cast<size_t>(n) * sizeof(double);
-  if (reuse && reuse->len && reuse->n == n && std::memcmp(reuse->v.data(), a.data(), bytes) == 0) {
-    std::memcpy(p, reuse->text, reuse->len);
-    if (save && save != reuse) {
-      save->n = n;
+// The axis array ("[1.5,2,-3]"), its text taken from `reuse` when that holds the same
+// values, and remembered in `save` for the next use.
+char* TraceWriter::putAxesCached(char* p, const AxisArray& a, int n, const AxesText* reuse,
+                                 AxesText* save) {
+  if (reuse && reuse->text && sameValues(reuse->v, a, n)) {
+    copyText(p, reuse->text, reuse->len);
+    if (save) {
       save->v = a;
+      save->text = p;
       save->len = reuse->len;
-      std::memcpy(save->text, reuse->text, reuse->len);
     }
     return p + reuse->len;
   }
@@ -216,61 +288,68 @@ char* TraceWriter::putAxesCached(char* p, std::string_view key, const AxisArray&
   }
   *p++ = ']';
   if (save) {
-    save->n = n;
     save->v = a;
+    save->text = start;
     save->len = static_cast<size_t>(p - start);
-    std::memcpy(save->text, start, save->len);
   }
   return p;
 }
 
-int TraceWriter::reportedAxes() const { return axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_); }
+int TraceWriter::reportedAxes() const {
+  return axes_ < 3 ? 3 : (axes_ > kMaxAxes ? kMaxAxes : axes_);
+}
 
 void TraceWriter::axes(const char* key, const AxisArray& a) {
   char tmp[16 + kMaxAxes * (kNumberChars + 1)];
   buf_.append(tmp, static_cast<size_t>(putAxes(tmp, key, a.data(), reportedAxes()) - tmp));
 }
 
-void TraceWriter::string(std::string_view s) { escapeInto(buf_, s); }
+void TraceWriter::string(std::string_view s) {
+  escapeInto(buf_, s);
+}
 
 void TraceWriter::onMove(const MoveEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
-  // The head holds the file and program names, whatever their length; everything after it
-  // has a bounded size: six axis arrays, the centre, the path points and a few numbers, each
-  // at most kNumberChars long.
-  const size_t names =
-      fileName(e.at.file).size() + (e.at.programName ? programName(*e.at.programName).size() : 0);
-  if (names > 2048) {
+  const std::string_view file = fileName(e.at.file);
+  const std::string_view prog =
+      e.at.programName ? programName(*e.at.programName) : std::string_view{};
+  char* const line = lines_[line_];
+  line_ ^= 1;
+  char* p = line;
+  if (file.size() + prog.size() > 2048)
     begin("move", e.at);  // very long names: the general (slower) way
-  } else {
-    char head[2048 + 128];
-    buf_.append(head, static_cast<size_t>(moveHead(head, e.at) - head));
-  }
-  char tmp[4096];
-  char* p = put(tmp, ",\"mode\":\"");
+  else
+    p = moveHead(p, file, prog, e.at);
+  p = put(p, ",\"mode\":\"");
   std::string_view mode = moveModeName(e.mode);
   std::memcpy(p, mode.data(), mode.size());
   p += mode.size();
-  *p++ = '"';
   const int n = reportedAxes();
-  p = putAxesCached(p, "start", e.start, n, &lastEnd_, nullptr);
-  p = putAxesCached(p, "end", e.end, n, nullptr, &lastEnd_);
-  p = putAxesCached(p, "mstart", e.mstart, n, &lastMend_, nullptr);
+  p = putAxesCached(put(p, "\",\"start\":"), e.start, n, &lastEnd_, nullptr);
+  p = putAxesCached(put(p, ",\"end\":"), e.end, n, nullptr, &lastEnd_);
+  p = putAxesCached(put(p, ",\"mstart\":"), e.mstart, n, &lastMend_, nullptr);
   // Without offsets the machine end is the work end: the same text again.
-  p = putAxesCached(p, "mend", e.mend, n, &lastEnd_, &lastMend_);
-  p = formatDouble(put(p, ",\"feed\":"), e.feed);
-  p = formatDouble(put(p, ",\"length\":"), e.length);
+  p = putAxesCached(put(p, ",\"mend\":"), e.mend, n, &lastEnd_, &lastMend_);
+  // Feed, length and times with a fixed number of decimals (docs/trace-format.md).
+  p = put(p, ",\"feed\":");
+  if (feedLen_ == 0 || std::bit_cast<uint64_t>(e.feed) != std::bit_cast<uint64_t>(lastFeed_)) {
+    lastFeed_ = e.feed;  // the feed seldom changes: its text is kept
+    feedLen_ = static_cast<size_t>(formatFixed(feedText_, e.feed) - feedText_);
+  }
+  copyText(p, feedText_, feedLen_);
+  p += feedLen_;
+  p = formatFixed(put(p, ",\"length\":"), e.length);
   p = put(p, ",\"time\":");
   char* timeText = p;
-  p = formatDouble(p, e.time);
+  p = formatFixed(p, e.time);
   const size_t timeLen = static_cast<size_t>(p - timeText);
   p = put(p, ",\"time_simple\":");
   const double simple = e.timeSimple >= 0 ? e.timeSimple : e.time;
-  if (std::memcmp(&simple, &e.time, sizeof simple) == 0) {
-    std::memmove(p, timeText, timeLen);  // the same double: the same text
+  if (std::bit_cast<uint64_t>(simple) == std::bit_cast<uint64_t>(e.time)) {
+    copyText(p, timeText, timeLen);  // the same double: the same text
     p += timeLen;
   } else {
-    p = formatDouble(p, simple);
+    p = formatFixed(p, simple);
   }
   if (e.arc) {
     p = putAxes(p, "center", e.center.data(), 3);
@@ -294,15 +373,17 @@ void TraceWriter::onMove(const MoveEvent& e) {
     }
     *p++ = ']';
   }
-  buf_.append(tmp, static_cast<size_t>(p - tmp));
-  end();
+  p = put(p, "}\n");
+  buf_.append(line, static_cast<size_t>(p - line));
+  checkLine();
 }
 
 void TraceWriter::onDwell(const DwellEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("dwell", e.at);
   fmt::format_to(std::back_inserter(buf_), ",\"time\":{}", e.time);
-  if (e.revolutions > 0) fmt::format_to(std::back_inserter(buf_), ",\"revolutions\":{}", e.revolutions);
+  if (e.revolutions > 0)
+    fmt::format_to(std::back_inserter(buf_), ",\"revolutions\":{}", e.revolutions);
   end();
 }
 
@@ -336,7 +417,8 @@ void TraceWriter::onSpindle(const SpindleEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   static const char* dirs[] = {"stop", "cw", "ccw", "orient"};
   begin("spindle", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"dir\":\"{}\",\"rpm\":{}", dirs[static_cast<int>(e.dir)], e.rpm);
+  fmt::format_to(std::back_inserter(buf_), ",\"dir\":\"{}\",\"rpm\":{}",
+                 dirs[static_cast<int>(e.dir)], e.rpm);
   end();
 }
 

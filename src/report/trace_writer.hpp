@@ -7,6 +7,7 @@
 
 #include "canon/events.hpp"
 #include "core/source.hpp"
+#include "report/json_number.hpp"
 
 namespace ncvm {
 
@@ -15,6 +16,9 @@ class TraceWriter final : public EventSink {
   // out == nullptr keeps the whole trace in buffer(). maxBytes stops a runaway trace.
   TraceWriter(const SourceFiles& files, std::FILE* out, uint64_t maxBytes, int axes = 3);
   ~TraceWriter() override;
+  // The last move's text is kept as pointers into lines_: not copyable.
+  TraceWriter(const TraceWriter&) = delete;
+  TraceWriter& operator=(const TraceWriter&) = delete;
   void flush();
   const std::string& buffer() const { return buf_; }
   uint64_t bytes() const { return written_ + buf_.size(); }
@@ -39,25 +43,30 @@ class TraceWriter final : public EventSink {
  private:
   void begin(const char* type, const EventOrigin& at);
   void end();
+  void checkLine();  // after a line: flush a full chunk, stop at the size limit
   void axes(const char* key, const AxisArray& a);
   void number(double v);  // exactly as fmt's "{}" (report/json_number.hpp), faster
   void number(int64_t v);
   int reportedAxes() const;  // axes_ clamped to 3..kMaxAxes
   void string(std::string_view s);
-  const std::string& fileName(uint32_t id);
-  const std::string& programName(const std::string& name);
-  char* moveHead(char* p, const EventOrigin& at);
-  // The text of an axis array ("[1.5,2,-3]") as last written, with its values: a move
-  // starts where the last one ended, so its start is usually that end's text again.
+  std::string_view fileName(uint32_t id);
+  std::string_view programName(const std::string& name);
+  char* moveHead(char* p, std::string_view file, std::string_view prog, const EventOrigin& at);
+  // A move's line is built in one of two buffers, in turn, and appended to buf_ once. The
+  // text of an axis array stays readable there until the move after next: a move starts
+  // where the last one ended, so its start is usually the text of that end again, and
+  // without offsets its machine end is the text of its own end.
   struct AxesText {
-    int n = 0;
     AxisArray v{};
+    const char* text = nullptr;  // in lines_, or nullptr before the first move
     size_t len = 0;
-    char text[2 + kMaxAxes * 33];
   };
-  char* putAxesCached(char* p, std::string_view key, const AxisArray& a, int n, AxesText* reuse,
-                      AxesText* save);
-
+  char* putAxesCached(char* p, const AxisArray& a, int n, const AxesText* reuse, AxesText* save);
+  // The head (names up to 2048 bytes, else written by begin()), then the rest, which is
+  // bounded (six axis arrays, the centre, the path points and a few numbers of at most
+  // kNumberChars each); kCopySlack for the 16-byte steps of copyText.
+  static constexpr size_t kLineBytes = 2048 + 128 + 4096;
+  static constexpr size_t kCopySlack = 32;
   const SourceFiles& files_;
   std::FILE* out_;
   uint64_t maxBytes_;
@@ -68,6 +77,14 @@ class TraceWriter final : public EventSink {
   std::vector<std::string> escapedNames_;
   std::string lastProgram_, lastProgramEscaped_;  // programName(): the last one escaped
   AxesText lastEnd_, lastMend_;
+  char lines_[2][kLineBytes + kCopySlack] = {};
+  int line_ = 0;           // the buffer of lines_ the next move is built in
+  uint32_t lastLine_ = 0;  // the last move's line and its text
+  size_t lineLen_ = 0;
+  char lineText_[kNumberChars + kCopySlack] = {};
+  double lastFeed_ = 0;  // the last move's feed and its text
+  size_t feedLen_ = 0;
+  char feedText_[kNumberChars + kCopySlack] = {};
 };
 
 }  // namespace ncvm

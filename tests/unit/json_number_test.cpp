@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -70,4 +72,84 @@ TEST(JsonNumber, Integers) {
     char buf[kNumberChars];
     EXPECT_EQ(std::string(buf, formatInt(buf, v)), fmt::format("{}", v));
   }
+}
+
+namespace {
+std::string fixed(double v) {
+  char buf[kNumberChars];
+  return std::string(buf, formatFixed(buf, v));
+}
+}  // namespace
+
+// A decimal of at most nine decimals (n / 10^m) comes out as the shortest form, byte for
+// byte, from 10^-4 up to 10^6: the trace keeps its text for every whole number, programmed
+// feed and round time.
+TEST(JsonNumber, FixedKeepsDecimalsOfUpToNineDigits) {
+  uint64_t k = 123456789;
+  int checked = 0;
+  for (int i = 0; i < 300000; ++i) {
+    k = k * 6364136223846793005ULL + 1442695040888963407ULL;
+    const int m = static_cast<int>((k >> 60) % 10);
+    auto n = static_cast<int64_t>((k >> 8) % 1000000000000000ULL) * ((k & 1) ? -1 : 1);
+    n /= static_cast<int64_t>(
+        std::pow(10.0, static_cast<double>((k >> 4) % 12)));  // shorter ones too
+    const double v = static_cast<double>(n) / std::pow(10.0, m);
+    if (!(std::fabs(v) >= 1e-4 && std::fabs(v) < 1e6)) continue;
+    ASSERT_EQ(fixed(v), fmt::format("{}", v)) << n << " / 10^" << m;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100000);
+}
+
+// Any other value: the nearest nine-decimal number (to within the double's own rounding),
+// in fixed notation without trailing zeros, that a JSON reader reads back.
+TEST(JsonNumber, FixedRoundsToNineDecimals) {
+  uint64_t k = 42;
+  for (int i = 0; i < 300000; ++i) {
+    k = k * 6364136223846793005ULL + 1442695040888963407ULL;
+    // Log-uniform from 10^-12 to 10^6, both signs: times, lengths, feeds, inch values.
+    const double unit = static_cast<double>(k >> 11) / 9007199254740992.0;
+    double v = std::pow(10.0, -12.0 + 18.0 * unit) * ((k & 1) ? -1 : 1);
+    if (i % 3 == 0) v = static_cast<double>(k % 100000000) / 25.4e6;  // inch from whole nm
+    const std::string s = fixed(v);
+    ASSERT_EQ(s.find_first_of("eE"), std::string::npos) << s;
+    const size_t point = s.find('.');
+    if (point != std::string::npos) {
+      ASSERT_LE(s.size() - point - 1, 9u) << s;
+      ASSERT_NE(s.back(), '0') << s;
+    }
+    const double back = std::strtod(s.c_str(), nullptr);
+    // Half a unit of the ninth decimal, plus the spacing of doubles at v.
+    ASSERT_LE(std::fabs(back - v), 5e-10 + 4e-16 * std::fabs(v)) << s << " for " << v;
+    // Correctly rounded: fmt's fixed precision rounds the exact binary value too (an exact
+    // tie, where the two might differ, needs |v| * 10^9 to end in .5 exactly).
+    std::string exact = fmt::format("{:.9f}", v);
+    while (exact.back() == '0') exact.pop_back();
+    if (exact.back() == '.') exact.pop_back();
+    if (exact == "-0") exact = "0";
+    ASSERT_EQ(s, exact) << v;
+  }
+}
+
+TEST(JsonNumber, FixedEdges) {
+  EXPECT_EQ(fixed(0.0), "0");
+  EXPECT_EQ(fixed(-0.0), "-0");  // as formatDouble writes it
+  EXPECT_EQ(fixed(4e-10), "0");
+  EXPECT_EQ(fixed(-4e-10), "0");  // rounds to zero: no sign
+  EXPECT_EQ(fixed(6e-10), "0.000000001");
+  EXPECT_EQ(fixed(-6e-10), "-0.000000001");
+  EXPECT_EQ(fixed(0.00001), "0.00001");  // fmt: "1e-05"
+  EXPECT_EQ(fixed(0.0894427190999916), "0.089442719");
+  EXPECT_EQ(fixed(0.9999999996), "1");
+  EXPECT_EQ(fixed(99.9999999996), "100");
+  EXPECT_EQ(fixed(14999.999999999998), "15000");
+  EXPECT_EQ(fixed(1.0 / 3.0), "0.333333333");
+  EXPECT_EQ(fixed(2.0 / 3.0), "0.666666667");
+  EXPECT_EQ(fixed(999999.9999999), "999999.9999999");  // just below 10^6
+  EXPECT_EQ(fixed(1e6), "1000000");
+  EXPECT_EQ(fixed(1234567.123456789), fmt::format("{}", 1234567.123456789));
+  EXPECT_EQ(fixed(1e300), fmt::format("{}", 1e300));
+  EXPECT_EQ(fixed(std::numeric_limits<double>::infinity()),
+            fmt::format("{}", std::numeric_limits<double>::infinity()));
+  EXPECT_EQ(fixed(std::nan("")), fmt::format("{}", std::nan("")));
 }
