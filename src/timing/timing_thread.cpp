@@ -17,12 +17,15 @@
 namespace ncvm {
 
 namespace {
-// A waiting side spins (pause, checking the other side's counter) for up to this long
-// before it sleeps on the condition variable: longer than the control takes for a batch
-// (about 20 moves), so while the control streams moves the worker never sleeps and the
-// control never pays a wake-up (a system call); short enough not to burn a core while the
-// control is busy elsewhere (a long macro loop, a stock cut).
-constexpr auto kSpin = std::chrono::microseconds(50);
+// A waiting side spins (pause, checking the other side's counter) for a few microseconds
+// before it sleeps on the condition variable. The worker sleeps with a timeout (kNap): it
+// wakes by itself and takes what the control wrote meanwhile, so the control never pays a
+// wake-up (a system call, several microseconds) while it streams moves; it wakes the worker
+// only when half of the stream or of the slots waits (or when it must wait itself), and at
+// the end. Neither side burns a core while the other is busy elsewhere (a long macro loop,
+// a stock cut, other jobs on the machine).
+constexpr auto kSpin = std::chrono::microseconds(4);
+constexpr auto kNap = std::chrono::microseconds(50);
 // The control makes its records visible to the worker in batches (one fenced store each):
 // every kBatch words (about 25 compact moves) or kSlotBatch slots. Each publication costs
 // the control a cache miss (the worker polls the counter), so not more often.
@@ -266,8 +269,8 @@ void TimingThread::commit(Record& r) {
   written(1);
 }
 
-// A sleeping worker is woken only once a quarter of the stream or of the slots waits for it
-// (or when the control must wait for it): one wake-up, a system call, per thousand words.
+// A sleeping worker is woken only once half of the stream or of the slots waits for it (or
+// when the control must wait for it); otherwise it wakes by itself (kNap).
 void TimingThread::publish(bool wake) {
   if (tail_ != publishedLocal_) {
     publishedLocal_ = tail_;
@@ -275,8 +278,8 @@ void TimingThread::publish(bool wake) {
     published_.store(tail_);  // seq_cst: ordered before the load of workerSleeps_
   }
   if (workerSleeps_.load() &&
-      (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWords / 4 ||
-       slotTail_ - slotHead_.load(std::memory_order_relaxed) >= kSlots / 4)) {
+      (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWords / 2 ||
+       slotTail_ - slotHead_.load(std::memory_order_relaxed) >= kSlots / 2)) {
     std::lock_guard<std::mutex> lock(mutex_);
     workerWake_.notify_one();
   }
@@ -453,7 +456,7 @@ void TimingThread::work() {
         continue;
       std::unique_lock<std::mutex> lock(mutex_);
       workerSleeps_.store(true);
-      workerWake_.wait(lock, [&] { return published_.load() != head || stop_.load(); });
+      workerWake_.wait_for(lock, kNap, [&] { return published_.load() != head || stop_.load(); });
       workerSleeps_.store(false, std::memory_order_relaxed);
       continue;
     }

@@ -39,9 +39,10 @@ class TimingStage;
 
 class TimingThread final : public EventSink {
  public:
-  // The stream of 8-byte words (32 KB: it stays in both cores' caches) and the side ring of
-  // whole events; both powers of two.
-  static constexpr uint64_t kWords = 4096;
+  // The stream of 8-byte words (128 KB: more than the control writes while the worker naps,
+  // and it stays in the cores' second-level caches) and the side ring of whole events; both
+  // powers of two.
+  static constexpr uint64_t kWords = 16384;
   static constexpr uint64_t kSlots = 256;
 
   // downstream: the sinks after the stage (may be nullptr), asked for their headroom; files:
