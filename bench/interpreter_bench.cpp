@@ -70,8 +70,9 @@ std::string camProgram(int lines) {
 
 // The same 100,000-block program with the cycle-time model off (no stage), in its simple
 // mode, and in its dynamic mode (look-ahead planning with the 0i-MF defaults). The stage
-// runs on a worker thread (timing.threads = 1, the default) or, in the *Sync variants, on
-// the calling thread. Google Benchmark's "CPU" is the calling (the control's) thread's
+// runs on a worker thread (timing.threads = 1; without a sink the moves go to it as compact
+// records) or, in the *Sync variants, on the calling thread (timing.threads = 0, the
+// default of `ncvm run`). Google Benchmark's "CPU" is the calling (the control's) thread's
 // CPU time and "Time" the wall time; the process_time variants count both threads' CPU.
 void camRun(benchmark::State& state, bool timing, bool dynamic, int threads = 1) {
   std::string text = camProgram(static_cast<int>(state.range(0)));

@@ -1,6 +1,8 @@
 #include "timing/timing_thread.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <chrono>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
@@ -15,41 +17,118 @@
 namespace ncvm {
 
 namespace {
-// A waiting side spins this many times (a few microseconds) before it sleeps on the
-// condition variable: long enough to catch the other side's next batch, short enough not
-// to burn a core while the control is busy elsewhere (a long macro loop, a stock cut).
-constexpr int kSpins = 256;
-// The control makes its events visible to the worker in batches (one fenced store each).
-constexpr uint64_t kBatch = 32;
-constexpr uint64_t kWake = TimingThread::kCapacity / 4;
-static_assert((TimingThread::kCapacity & (TimingThread::kCapacity - 1)) == 0, "a power of two");
-static_assert(kBatch < TimingThread::kCapacity);
+// A waiting side spins (pause, checking the other side's counter) for a few microseconds
+// before it sleeps on the condition variable. The worker sleeps with a timeout (kNap): it
+// wakes by itself and takes what the control wrote meanwhile, so the control never pays a
+// wake-up (a system call, several microseconds) while it streams moves; it wakes the worker
+// only when half of the stream or of the slots waits (or when it must wait itself), and at
+// the end. Neither side burns a core while the other is busy elsewhere (a long macro loop,
+// a stock cut, other jobs on the machine).
+constexpr auto kSpin = std::chrono::microseconds(4);
+constexpr auto kNap = std::chrono::microseconds(50);
+// The control makes its records visible to the worker in batches (one fenced store each):
+// every kBatch words (about 25 compact moves) or kSlotBatch slots. Each publication costs
+// the control a cache miss (the worker polls the counter), so not more often.
+constexpr uint64_t kBatch = 512;
+constexpr uint64_t kSlotBatch = 32;
+// The worker tells the control how far it is every kHeadBatch words (and when it is idle).
+constexpr uint64_t kHeadBatch = 1024;
+static_assert((TimingThread::kWords & (TimingThread::kWords - 1)) == 0, "a power of two");
+static_assert((TimingThread::kSlots & (TimingThread::kSlots - 1)) == 0, "a power of two");
+static_assert(kBatch <= TimingThread::kWords / 4 && kSlotBatch < TimingThread::kSlots / 4);
 
-// The stage alone (no sink after it) reads a move's head (up to the dog-leg path) and its
-// thread flag: the ring carries only those, about 300 of the event's 680 bytes. With a sink
-// after the stage the whole event goes, the path only as far as it is used.
+// A stream record: its first word is the header, kind | words << 8 | flags << 16 | mode <<
+// 24 | MoveEvent's exactStop, inch << 32 | thread, skip << 48 (the bools' bytes). A compact
+// move then has: the origin as it is in the event (3 words), feed, length, time; start,
+// end, mstart, mend (X Y Z, or all six axes); perRev, surfaceSpeed, rpmLimit (when any is
+// set); the arc's centre and plane (arcs).
+constexpr uint64_t kPad = 0, kCompact = 1, kSlot = 2;
+constexpr uint64_t fSix = 1;   // the axes arrays have six values (an A, B or C is not +0.0)
+constexpr uint64_t fSpin = 2;  // perRev, surfaceSpeed, rpmLimit follow
+constexpr uint64_t fArc = 4;   // centre and plane follow
+constexpr uint64_t kMaxCompact = 7 + 4 * kMaxAxes + 3 + 4;
+
+inline uint64_t bits(double d) {
+  return std::bit_cast<uint64_t>(d);
+}
+inline double real(uint64_t w) {
+  return std::bit_cast<double>(w);
+}
+template <class T>
+inline uint64_t word(const T& v) {
+  static_assert(sizeof(T) <= sizeof(uint64_t));
+  uint64_t w = 0;
+  std::memcpy(&w, &v, sizeof(T));
+  return w;
+}
+
+// The event's start, end, mstart and mend, one after the other (copied as one block).
+constexpr size_t kAxesAt = offsetof(MoveEvent, start);
+static_assert(offsetof(MoveEvent, end) == kAxesAt + sizeof(AxisArray) &&
+              offsetof(MoveEvent, mstart) == kAxesAt + 2 * sizeof(AxisArray) &&
+              offsetof(MoveEvent, mend) == kAxesAt + 3 * sizeof(AxisArray));
+static_assert(offsetof(MoveEvent, length) == offsetof(MoveEvent, feed) + sizeof(double) &&
+              offsetof(MoveEvent, time) == offsetof(MoveEvent, feed) + 2 * sizeof(double));
+static_assert(offsetof(MoveEvent, inch) == offsetof(MoveEvent, exactStop) + 1 &&
+              offsetof(MoveEvent, skip) == offsetof(MoveEvent, thread) + 1);
+static_assert(sizeof(EventOrigin) == 3 * sizeof(uint64_t));
+
+// The value number k of the four arrays, as bits.
+inline uint64_t axisWord(const MoveEvent& e, size_t k) {
+  uint64_t w;
+  std::memcpy(&w, reinterpret_cast<const char*>(&e) + kAxesAt + k * sizeof(double), sizeof w);
+  return w;
+}
+// Whether any A, B or C value of the four arrays has a bit set (-0.0 counts: the worker
+// must get exactly the control's values), so the record needs six axes.
+inline bool hasAbc(const MoveEvent& e) {
+  return (axisWord(e, 3) | axisWord(e, 4) | axisWord(e, 5) | axisWord(e, 9) | axisWord(e, 10) |
+          axisWord(e, 11) | axisWord(e, 15) | axisWord(e, 16) | axisWord(e, 17) | axisWord(e, 21) |
+          axisWord(e, 22) | axisWord(e, 23)) != 0;
+}
+
+// The whole event (for the sinks after the stage), the dog-leg path only as far as it is
+// used.
 constexpr size_t kMoveHead = offsetof(MoveEvent, path);
 constexpr size_t kMoveTail = offsetof(MoveEvent, thread);
 static_assert(std::is_trivially_copyable_v<MoveEvent>);
 
-inline void copyMove(MoveEvent& to, const MoveEvent& from, bool whole) {
+inline void copyMove(MoveEvent& to, const MoveEvent& from) {
   std::memcpy(static_cast<void*>(&to), &from, kMoveHead);
-  if (whole) {
-    std::memcpy(static_cast<void*>(to.path.data()), from.path.data(),
-                sizeof(AxisArray) * static_cast<size_t>(std::clamp(from.pathPoints, 0, kMaxAxes)));
-    std::memcpy(reinterpret_cast<char*>(&to) + kMoveTail,
-                reinterpret_cast<const char*>(&from) + kMoveTail, sizeof(MoveEvent) - kMoveTail);
-  } else {
-    to.thread = from.thread;
-    to.skip = from.skip;
-    to.compensated = to.nose = false;
-  }
+  std::memcpy(static_cast<void*>(to.path.data()), from.path.data(),
+              sizeof(AxisArray) * static_cast<size_t>(std::clamp(from.pathPoints, 0, kMaxAxes)));
+  std::memcpy(reinterpret_cast<char*>(&to) + kMoveTail,
+              reinterpret_cast<const char*>(&from) + kMoveTail, sizeof(MoveEvent) - kMoveTail);
 }
 
 inline void relax() {
 #if defined(__x86_64__) || defined(__i386__)
   _mm_pause();
 #endif
+}
+
+// Asks for the cache line at p for writing before the control writes it, so the store does
+// not wait while the line comes back from the worker's core (a hint: a no-op where the
+// instruction does not exist).
+inline void prefetchWrite(const void* p) {
+#if defined(__x86_64__)
+  asm volatile("prefetchw %0" : : "m"(*static_cast<const char*>(p)));
+#else
+  __builtin_prefetch(p, 1);
+#endif
+}
+
+// Spins until done() or kSpin has passed; true when done.
+template <class F>
+bool spinUntil(F done) {
+  auto until = std::chrono::steady_clock::now() + kSpin;
+  for (;;) {
+    for (int k = 0; k < 64; ++k) {
+      if (done()) return true;
+      relax();
+    }
+    if (std::chrono::steady_clock::now() >= until) return done();
+  }
 }
 }  // namespace
 
@@ -61,7 +140,8 @@ TimingThread::TimingThread(EventSink* downstream, const SourceFiles& files)
     : downstream_(downstream),
       files_(files),
       limited_(downstream && downstream->byteHeadroom() != UINT64_MAX),
-      ring_(std::make_unique<Record[]>(kCapacity)),
+      compact_(!downstream),
+      slots_(std::make_unique<Record[]>(kSlots)),
       counter_(downstream) {}
 
 EventSink* TimingThread::stageSink() {
@@ -123,7 +203,7 @@ bool TimingThread::admit(const EventOrigin& at, std::string_view t0, std::string
   if (boundSum_ + bound_ <= allowedSeen_) return true;
   // The sinks might reach their limit: let the worker take everything, then see again.
   publish(true);
-  waitHead(tail_);
+  waitFor(tail_, slotTail_);
   allowedSeen_ = allowed_.load(std::memory_order_acquire);
   if (failed_.load(std::memory_order_acquire) && !rethrown_) rethrowFailure();
   if (boundSum_ + bound_ <= allowedSeen_) return true;
@@ -131,57 +211,146 @@ bool TimingThread::admit(const EventOrigin& at, std::string_view t0, std::string
   return false;
 }
 
-TimingThread::Record& TimingThread::claim() {
-  if (tail_ - headSeen_ == kCapacity) {
+uint64_t* TimingThread::reserve(uint64_t words) {
+  uint64_t off = tail_ & (kWords - 1);
+  if (off + words <= kWords && tail_ + words - headSeen_ <= kWords) [[likely]] {
+    // The lines the next records go to, a few records ahead.
+    prefetchWrite(&ring_[(off + 64) & (kWords - 1)]);
+    prefetchWrite(&ring_[(off + 72) & (kWords - 1)]);
+    return &ring_[off];
+  }
+  return reserveSlow(words);
+}
+
+uint64_t* TimingThread::reserveSlow(uint64_t words) {
+  uint64_t off = tail_ & (kWords - 1);
+  uint64_t pad = off + words > kWords ? kWords - off : 0;
+  if (tail_ + pad + words - headSeen_ > kWords) {
     headSeen_ = head_.load(std::memory_order_acquire);
-    if (tail_ - headSeen_ == kCapacity) {
-      // Full: wait until half of it is free again, not for every single slot.
+    if (tail_ + pad + words - headSeen_ > kWords) {
+      // Full: wait until half of it is free again, not for every single record.
       publish(true);
-      waitHead(tail_ - kCapacity / 2);
+      waitFor(tail_ + pad + words - kWords / 2, 0);
     }
   }
-  return ring_[tail_ & (kCapacity - 1)];
+  if (pad) {
+    ring_[off] = kPad | pad << 8;
+    tail_ += pad;
+    off = 0;
+  }
+  return &ring_[off];
+}
+
+void TimingThread::written(uint64_t words) {
+  tail_ += words;
+  if (tail_ - publishedLocal_ >= kBatch || slotTail_ - slotPublished_ >= kSlotBatch) {
+    publish();
+    if (failed_.load(std::memory_order_acquire) && !rethrown_) rethrowFailure();
+  }
+}
+
+TimingThread::Record& TimingThread::claim() {
+  if (slotTail_ - slotHeadSeen_ == kSlots) {
+    slotHeadSeen_ = slotHead_.load(std::memory_order_acquire);
+    if (slotTail_ - slotHeadSeen_ == kSlots) {
+      publish(true);
+      waitFor(0, slotTail_ - kSlots / 2);
+    }
+  }
+  return slots_[slotTail_ & (kSlots - 1)];
 }
 
 void TimingThread::commit(Record& r) {
   r.bound = bound_;
   boundSum_ += bound_;
-  ++tail_;
-  if (tail_ - publishedLocal_ >= kBatch) publish();
+  uint64_t* w = reserve(1);
+  w[0] = kSlot | uint64_t{1} << 8;
+  ++slotTail_;
+  written(1);
 }
 
-// A sleeping worker is woken only once a quarter of the ring waits for it (or when the
-// control must wait for it): one wake-up, a system call, per 128 events rather than per batch.
+// A sleeping worker is woken only once half of the stream or of the slots waits for it (or
+// when the control must wait for it); otherwise it wakes by itself (kNap).
 void TimingThread::publish(bool wake) {
   if (tail_ != publishedLocal_) {
     publishedLocal_ = tail_;
+    slotPublished_ = slotTail_;
     published_.store(tail_);  // seq_cst: ordered before the load of workerSleeps_
   }
-  if (workerSleeps_.load() && (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWake)) {
+  if (workerSleeps_.load() &&
+      (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWords / 2 ||
+       slotTail_ - slotHead_.load(std::memory_order_relaxed) >= kSlots / 2)) {
     std::lock_guard<std::mutex> lock(mutex_);
     workerWake_.notify_one();
   }
 }
 
-void TimingThread::waitHead(uint64_t target) {
-  for (int k = 0; k < kSpins; ++k) {
+void TimingThread::waitFor(uint64_t head, uint64_t slot) {
+  auto done = [&] {
     headSeen_ = head_.load(std::memory_order_acquire);
-    if (headSeen_ >= target) return;
-    relax();
-  }
+    slotHeadSeen_ = slotHead_.load(std::memory_order_acquire);
+    return headSeen_ >= head && slotHeadSeen_ >= slot;
+  };
+  if (spinUntil(done)) return;
   std::unique_lock<std::mutex> lock(mutex_);
-  wantHead_.store(target, std::memory_order_relaxed);  // published by the next store
+  wantHead_.store(head, std::memory_order_relaxed);  // published by the next store
+  wantSlot_.store(slot, std::memory_order_relaxed);
   producerSleeps_.store(true);
-  producerWake_.wait(lock, [&] { return head_.load() >= target; });
+  producerWake_.wait(lock, [&] { return head_.load() >= head && slotHead_.load() >= slot; });
   producerSleeps_.store(false, std::memory_order_relaxed);
-  headSeen_ = head_.load(std::memory_order_acquire);
+  done();
+}
+
+// Only what the stage reads: the worker rebuilds the event from it (docs/performance.md).
+// On a machine without A, B and C (whose events have +0.0 there) three axes of each array.
+void TimingThread::queueCompact(const MoveEvent& e) {
+  uint64_t* w = reserve(kMaxCompact);
+  const auto* from = reinterpret_cast<const char*>(&e);
+  std::memcpy(w + 1, &e.at, sizeof(EventOrigin));
+  std::memcpy(w + 4, &e.feed, 3 * sizeof(double));
+  uint64_t* p = w + 7;
+  uint64_t f = 0;
+  if (!hasAbc(e)) [[likely]] {
+    constexpr size_t kXyz = 3 * sizeof(double), kArray = sizeof(AxisArray);
+    std::memcpy(p, from + kAxesAt, kXyz);
+    std::memcpy(p + 3, from + kAxesAt + kArray, kXyz);
+    std::memcpy(p + 6, from + kAxesAt + 2 * kArray, kXyz);
+    std::memcpy(p + 9, from + kAxesAt + 3 * kArray, kXyz);
+    p += 12;
+  } else {
+    f |= fSix;
+    std::memcpy(p, from + kAxesAt, 4 * sizeof(AxisArray));
+    p += 4 * kMaxAxes;
+  }
+  if ((bits(e.perRev) | bits(e.surfaceSpeed) | bits(e.rpmLimit)) != 0) [[unlikely]] {
+    f |= fSpin;
+    p[0] = bits(e.perRev), p[1] = bits(e.surfaceSpeed), p[2] = bits(e.rpmLimit);
+    p += 3;
+  }
+  if (e.arc) {
+    f |= fArc;
+    p[0] = bits(e.center[0]), p[1] = bits(e.center[1]), p[2] = bits(e.center[2]);
+    p[3] = static_cast<uint64_t>(static_cast<uint32_t>(e.plane));
+    p += 4;
+  }
+  uint16_t stopInch, threadSkip;
+  std::memcpy(&stopInch, &e.exactStop, 2);
+  std::memcpy(&threadSkip, &e.thread, 2);
+  const auto words = static_cast<uint64_t>(p - w);
+  w[0] = kCompact | words << 8 | f << 16 | word(e.mode) << 24 | uint64_t{stopInch} << 32 |
+         uint64_t{threadSkip} << 48;
+  written(words);
 }
 
 void TimingThread::onMove(const MoveEvent& e) {
+  // Nothing after the stage: the stage reads only part of the event (the worker's failure,
+  // which only the stage itself could raise here, is looked at once per batch).
+  if (compact_) [[likely]]
+    return queueCompact(e);
   if (!admit(e.at)) return stage_->onMove(e);
   Record& r = claim();
   r.kind = Kind::Move;
-  copyMove(r.move, e, downstream_ != nullptr);
+  copyMove(r.move, e);
   commit(r);
 }
 
@@ -249,11 +418,7 @@ void TimingThread::onOffset(const OffsetEvent& e) {
 }
 
 void TimingThread::onSkip(const SkipEvent& e) {
-  if (!admit(e.at)) return stage_->onSkip(e);
-  Record& r = claim();
-  r.kind = Kind::Skip;
-  r.skip = e;
-  commit(r);
+  queueWhole(e, Kind::Skip, &Record::skip, &TimingStage::onSkip);
 }
 
 void TimingThread::onComment(const CommentEvent& e) {
@@ -267,33 +432,116 @@ void TimingThread::onComment(const CommentEvent& e) {
 
 // ---- the worker ----------------------------------------------------------------------------
 
+void TimingThread::publishHead(uint64_t head, uint64_t slot) {
+  slotHead_.store(slot);
+  head_.store(head);  // seq_cst: ordered before the load of producerSleeps_
+  if (producerSleeps_.load() && head >= wantHead_.load(std::memory_order_relaxed) &&
+      slot >= wantSlot_.load(std::memory_order_relaxed)) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    producerWake_.notify_one();
+  }
+}
+
 void TimingThread::work() {
-  uint64_t head = 0;
+  uint64_t head = 0, slot = 0;
   for (;;) {
     const bool stopping = stop_.load(std::memory_order_acquire);
     uint64_t avail = published_.load(std::memory_order_acquire);
     if (avail == head) {
       if (stopping) return;
-      for (int k = 0; k < kSpins && avail == head && !stop_.load(std::memory_order_relaxed); ++k) {
-        relax();
-        avail = published_.load(std::memory_order_acquire);
-      }
-      if (avail == head) {
-        std::unique_lock<std::mutex> lock(mutex_);
-        workerSleeps_.store(true);
-        workerWake_.wait(lock, [&] { return published_.load() != head || stop_.load(); });
-        workerSleeps_.store(false, std::memory_order_relaxed);
-      }
+      if (spinUntil([&] {
+            return published_.load(std::memory_order_relaxed) != head ||
+                   stop_.load(std::memory_order_relaxed);
+          }))
+        continue;
+      std::unique_lock<std::mutex> lock(mutex_);
+      workerSleeps_.store(true);
+      workerWake_.wait_for(lock, kNap, [&] { return published_.load() != head || stop_.load(); });
+      workerSleeps_.store(false, std::memory_order_relaxed);
       continue;
     }
+    uint64_t told = head, toldSlot = slot;
     while (head < avail) {
-      deliver(ring_[head & (kCapacity - 1)]);
-      ++head;
-      head_.store(head);  // seq_cst: ordered before the load of producerSleeps_
-      if (producerSleeps_.load() && head >= wantHead_.load(std::memory_order_relaxed)) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        producerWake_.notify_one();
+      const uint64_t* w = &ring_[head & (kWords - 1)];
+      // The lines the control wrote a few records further on, fetched from its core while
+      // the stage works on this one.
+      __builtin_prefetch(&ring_[(head + 64) & (kWords - 1)]);
+      __builtin_prefetch(&ring_[(head + 72) & (kWords - 1)]);
+      const uint64_t header = w[0];
+      switch (header & 0xff) {
+        case kCompact:
+          deliverCompact(w, header);
+          break;
+        case kSlot:
+          deliver(slots_[slot & (kSlots - 1)]);
+          ++slot;
+          break;
+        default:
+          static_assert(kPad != kCompact && kPad != kSlot);
+          break;  // kPad: the rest of the stream before its end
       }
+      head += (header >> 8) & 0xff;
+      if (head - told >= kHeadBatch || slot - toldSlot >= kSlotBatch) {
+        publishHead(head, slot);
+        told = head, toldSlot = slot;
+      }
+    }
+    publishHead(head, slot);
+  }
+}
+
+void TimingThread::deliverCompact(const uint64_t* w, uint64_t header) {
+  MoveEvent& e = move_;
+  auto* to = reinterpret_cast<char*>(&e);
+  const uint64_t f = (header >> 16) & 0xff;
+  e.mode = static_cast<MoveMode>((header >> 24) & 0xff);
+  std::memcpy(static_cast<void*>(&e.at), w + 1, sizeof(EventOrigin));
+  std::memcpy(&e.feed, w + 4, 3 * sizeof(double));
+  const uint64_t* p = w + 7;
+  // What a record leaves out is zero (or 17 for the plane); the move keeps it from the last
+  // record that had it, so it is cleared only when that one did.
+  if (!(f & fSix)) {
+    for (AxisArray* a : {&e.start, &e.end, &e.mstart, &e.mend}) {
+      std::memcpy(a->data(), p, 3 * sizeof(double));
+      p += 3;
+    }
+    if (hadSix_) {
+      for (AxisArray* a : {&e.start, &e.end, &e.mstart, &e.mend}) (*a)[3] = (*a)[4] = (*a)[5] = 0;
+      hadSix_ = false;
+    }
+  } else {
+    std::memcpy(to + kAxesAt, p, 4 * sizeof(AxisArray));
+    p += 4 * kMaxAxes;
+    hadSix_ = true;
+  }
+  if (f & fSpin) {
+    e.perRev = real(p[0]), e.surfaceSpeed = real(p[1]), e.rpmLimit = real(p[2]);
+    p += 3;
+    hadSpin_ = true;
+  } else if (hadSpin_) {
+    e.perRev = e.surfaceSpeed = e.rpmLimit = 0;
+    hadSpin_ = false;
+  }
+  e.arc = f & fArc;
+  if (e.arc) {
+    e.center = {real(p[0]), real(p[1]), real(p[2])};
+    e.plane = static_cast<int>(static_cast<uint32_t>(p[3]));
+    hadArc_ = true;
+  } else if (hadArc_) {
+    e.center = {};
+    e.plane = 17;
+    hadArc_ = false;
+  }
+  const auto stopInch = static_cast<uint16_t>(header >> 32),
+             threadSkip = static_cast<uint16_t>(header >> 48);
+  std::memcpy(&e.exactStop, &stopInch, 2);
+  std::memcpy(&e.thread, &threadSkip, 2);
+  try {
+    stage_->onMove(e);
+  } catch (...) {
+    if (!error_) {
+      error_ = std::current_exception();
+      failed_.store(true, std::memory_order_release);
     }
   }
 }

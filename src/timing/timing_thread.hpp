@@ -1,18 +1,26 @@
 #pragma once
 // The time stage and the sinks after it on a worker thread. The control never reads what the
 // stage computes (#3001/#3002 and limits.max_time_s use the executor's own clock), so the
-// stage can plan while the control interprets the next blocks: this sink copies every event
-// into a bounded single-producer / single-consumer ring, and the worker hands them, in
+// stage can plan while the control interprets the next blocks: this sink writes every event
+// into a bounded single-producer / single-consumer stream, and the worker hands them, in
 // order, to the stage. Everything after the stage sees the same events in the same order
 // with the same times as on the control's thread.
 //
-// How far the control runs ahead: at most kCapacity events (the ring is full: the control
-// waits). A sink that throws on the worker (an I/O error) stops the control at its next
-// event with that exception. A sink with a size limit (the trace) never reaches it on the
-// worker: every event carries a bound of the bytes it can add, and before the bytes that the
-// events in flight could add pass the sink's headroom, the control waits for the worker to
-// empty the ring and goes on with the stage on its own thread (then the limit alarm comes at
-// the same event, with the same outputs, as without the worker).
+// What crosses between the cores is what costs (each cache line the control writes is read
+// on the other core): without a sink after the stage a move goes as a compact record of
+// 8-byte words, only the fields the stage reads (about 100 bytes for a three-axis move whose
+// start is the previous move's end), written one after the other. Every other event, and
+// every move when a sink follows the stage (the trace needs the whole event), goes into a
+// slot of a small side ring, and the stream carries one word saying "the next slot".
+//
+// How far the control runs ahead: at most kWords words of the stream and kSlots whole
+// events (then the control waits). A sink that throws on the worker (an I/O error) stops
+// the control at its next event with that exception. A sink with a size limit (the trace)
+// never reaches it on the worker: every event carries a bound of the bytes it can add, and
+// before the bytes that the events in flight could add pass the sink's headroom, the control
+// waits for the worker to empty the stream and goes on with the stage on its own thread
+// (then the limit alarm comes at the same event, with the same outputs, as without the
+// worker).
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -31,7 +39,11 @@ class TimingStage;
 
 class TimingThread final : public EventSink {
  public:
-  static constexpr uint64_t kCapacity = 512;  // events in flight at most (a power of two)
+  // The stream of 8-byte words (128 KB: more than the control writes while the worker naps,
+  // and it stays in the cores' second-level caches) and the side ring of whole events; both
+  // powers of two.
+  static constexpr uint64_t kWords = 16384;
+  static constexpr uint64_t kSlots = 256;
 
   // downstream: the sinks after the stage (may be nullptr), asked for their headroom; files:
   // for the byte bound of an event's names. Build the stage with stageSink() as its next
@@ -79,8 +91,8 @@ class TimingThread final : public EventSink {
     Skip,
     Comment
   };
-  // One event in the ring; the texts an event points to are copied into `text` (their
-  // capacity is reused, so a full ring allocates nothing more).
+  // One whole event in the side ring; the texts an event points to are copied into `text`
+  // (their capacity is reused, so a full ring allocates nothing more).
   struct Record {
     Kind kind = Kind::Move;
     uint64_t bound = 0;  // trace bytes this event can add (only with a limited sink)
@@ -102,20 +114,28 @@ class TimingThread final : public EventSink {
   // Before each event: rethrows a sink's exception from the worker; false when the event
   // goes straight to the stage (on this thread); computes the event's byte bound.
   bool admit(const EventOrigin& at, std::string_view t0 = {}, std::string_view t1 = {});
-  Record& claim();  // the next free slot (waits while the ring is full)
+  // Room for a record of at most `words` words, contiguous (a record never wraps: the rest
+  // of the stream before its end is skipped); waits while the stream is full.
+  uint64_t* reserve(uint64_t words);
+  uint64_t* reserveSlow(uint64_t words);  // the stream's end, or full
+  void written(uint64_t words);           // the record reserve() returned is complete
+  void queueCompact(const MoveEvent& e);
+  Record& claim();  // the next free slot (waits while the side ring is full)
   // An event without texts of its own: copied whole into its slot of the record, or (when
   // admit says so) handed straight to the stage.
   template <class E>
   void queueWhole(const E& e, Kind kind, E Record::*slot, void (TimingStage::*direct)(const E&));
   void commit(Record& r);
   void publish(bool wake = false);
-  void waitHead(uint64_t target);  // until the worker has taken every event before target
-  void goSynchronous();
+  // Until the worker has taken the stream up to word `head` and the slots up to `slot`.
+  void waitFor(uint64_t head, uint64_t slot);
   void rethrowFailure();
   // Worker side.
   void work();
+  void deliverCompact(const uint64_t* w, uint64_t header);
   void deliver(Record& r);
   void account(const Record& r);
+  void publishHead(uint64_t head, uint64_t slot);
 
   // Between the stage and the downstream sinks when they have a limit: counts what the stage
   // has passed on (the events it still holds are the ones it was given and has not).
@@ -143,34 +163,47 @@ class TimingThread final : public EventSink {
   EventSink* downstream_;
   const SourceFiles& files_;
   const bool limited_;  // a sink after the stage has a size limit: events carry bounds
-  std::unique_ptr<Record[]> ring_;
+  const bool compact_;  // no sink after the stage: moves go as compact records
+  std::unique_ptr<Record[]> slots_;
   bool direct_ = false;  // the stage runs on this thread again (never goes back)
   bool finished_ = false;
   bool rethrown_ = false;
 
-  // Producer-only counters.
-  uint64_t tail_ = 0;            // events written
+  // Producer-only state.
+  uint64_t tail_ = 0;            // stream words written
   uint64_t publishedLocal_ = 0;  // the last tail_ published
-  uint64_t bound_ = 0;           // the bound of the event being sent
   uint64_t headSeen_ = 0;        // the worker's head as last read
+  uint64_t slotTail_ = 0;        // slots written
+  uint64_t slotPublished_ = 0;   // slotTail_ when tail_ was last published
+  uint64_t slotHeadSeen_ = 0;    // the worker's slot head as last read
+  uint64_t bound_ = 0;           // the bound of the event being sent
   uint64_t boundSum_ = 0;        // sum of the bounds of the events written
   uint64_t allowedSeen_ = 0;     // allowed_ as last read
-  // Shared; each on its own cache line (one writer each).
-  alignas(64) std::atomic<uint64_t> published_{0};  // producer: events the worker may take
-  alignas(64) std::atomic<uint64_t> head_{0};       // worker: events taken and delivered
+
+  // Shared; each group on its own cache line, written by one side only.
+  alignas(64) std::atomic<uint64_t> published_{0};  // producer: stream words the worker may take
+  alignas(64) std::atomic<uint64_t> head_{0};       // worker: stream words taken and delivered
+  std::atomic<uint64_t> slotHead_{0};               // worker: slots delivered
   // Worker: the bound sum up to which events are surely within the sinks' headroom.
   alignas(64) std::atomic<uint64_t> allowed_{0};
-  alignas(64) std::atomic<bool> failed_{false};
+  alignas(64) std::atomic<bool> workerSleeps_{false};    // worker
+  alignas(64) std::atomic<bool> producerSleeps_{false};  // producer, with what it waits for
+  std::atomic<uint64_t> wantHead_{0}, wantSlot_{0};
+  alignas(64) std::atomic<bool> failed_{false};  // written once each
   std::atomic<bool> stop_{false};
-  std::atomic<bool> workerSleeps_{false}, producerSleeps_{false};
-  std::atomic<uint64_t> wantHead_{0};  // what a sleeping control waits for
-  std::exception_ptr error_;           // written by the worker before failed_
+  std::exception_ptr error_;  // written by the worker before failed_
   std::mutex mutex_;
   std::condition_variable workerWake_, producerWake_;
 
-  // Worker-only state for the bound bookkeeping.
+  // Worker-only state: the move a compact record is read into (the fields the stage does not
+  // read keep their defaults), and the bound bookkeeping.
+  alignas(64) MoveEvent move_;
+  bool hadSix_ = false, hadSpin_ = false, hadArc_ = false;  // move_ has such values
   Counter counter_;
   uint64_t inputs_ = 0, maxBound_ = 0, workerBoundSum_ = 0;
+
+  // The stream itself: written by the producer only, read by the worker only.
+  alignas(64) uint64_t ring_[kWords] = {};
 
   std::thread thread_;  // last: started when everything above is ready
 };

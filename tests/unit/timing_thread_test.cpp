@@ -45,6 +45,7 @@ struct Outcome {
   std::string trace;
   std::string state;
   bool threaded = false;
+  std::string alarm;  // the run's alarm code, empty when none
 };
 
 Outcome runWith(const Setup& setup, const std::string& text, int threads, bool trace,
@@ -54,7 +55,8 @@ Outcome runWith(const Setup& setup, const std::string& text, int threads, bool t
   s.addProgramText(text, "t.nc");
   TraceWriter writer(s.files(), nullptr, maxTrace, s.setup().reportedAxes());
   Session::Result r = s.run(trace ? &writer : nullptr);
-  return Outcome{writer.buffer(), r.state.dump(), s.usedTimingThread()};
+  return Outcome{writer.buffer(), r.state.dump(), s.usedTimingThread(),
+                 r.alarm ? r.alarm->code : std::string()};
 }
 
 Setup withModel(bool dynamic) {
@@ -82,6 +84,68 @@ TEST(TimingThread, SameTraceAndStateAsOnTheControlsThread) {
       if (trace) {
         EXPECT_GT(worker.trace.size(), 100000u);
       }
+    }
+  }
+}
+
+// Without a sink after the stage the worker gets compact records (only what the stage
+// reads): every field of them must come through. A machine with A and C (six-axis records),
+// inch blocks, arcs in all three planes, exact stop, peck drilling; a lathe with G96 and
+// feed per revolution (the spindle fields), a G50 clamp and G32 threads.
+std::string fiveAxisProgram(int rows) {
+  std::string s = "O0011\nG90 G17 G21 G94\nG00 X0 Y0 Z5. A0 C0\nG01 Z-1. F800.\n";
+  for (int k = 0; k < rows; ++k) {
+    double x = k % 2 ? 0.0 : 40.0, y = k * 1.5;
+    s += fmt::format("X{:.3f} Y{:.3f} A{:.1f} C{:.1f}\n", x, y, (k % 7) * 5.0, (k % 5) * -3.0);
+    s +=
+        fmt::format("G18 G02 X{:.3f} Z-1.5 R3.\nG19 G03 Y{:.3f} Z-1. R2.\nG17\n", x + 2.0, y + 1.0);
+    s += fmt::format("G09 G01 X{:.3f}\nG61 Y{:.3f}\nG01 X{:.3f} Y{:.3f}\nG64\n", x + 1.0, y + 1.2,
+                     x + 0.5, y + 1.4);
+    if (k % 4 == 0) s += fmt::format("G20 G01 X{:.4f} F20.\nG21 F800.\n", (x + 1.0) / 25.4);
+    if (k % 5 == 0)
+      s += fmt::format("G00 Z5.\nG83 X{:.1f} Y{:.1f} Z-12. R2. Q3. F200.\nG80\nG01 Z-1. F800.\n", x,
+                       y);
+  }
+  s += "G00 Z50. A0 C0\nM30\n";
+  return s;
+}
+
+std::string latheProgram(int passes) {
+  std::string s = "O0012\nG50 S2500\nT0101\nG00 X60. Z5.\nG96 S180 M03\n";
+  for (int k = 0; k < passes; ++k) {
+    double d = 58.0 - (k % 10) * 2.0;
+    s += fmt::format("G00 X{:.1f} Z2.\nG99 G01 Z-30. F0.2\nG02 X{:.1f} Z-35. R5.\n", d, d + 10.0);
+    s += fmt::format("G98 G01 X{:.1f} F300.\nG00 X80. Z5.\n", d + 14.0);
+    if (k % 3 == 0)
+      s += "G97 S800 M03\nG00 X48. Z5.\nG32 Z-20. F1.5\nG00 X60.\nZ5.\nG96 S180 M03\n";
+  }
+  s += "G00 X100. Z50.\nM05\nM30\n";
+  return s;
+}
+
+TEST(TimingThread, CompactRecordsCarryWhatTheStageReads) {
+  ncvm::Setup mill = withModel(true);
+  applySetting(mill, "axes.A.rotary=true");
+  applySetting(mill, "axes.C.rotary=true");
+  ncvm::Setup lathe = defaultSetup(MachineKind::Lathe);
+  lathe.timing.dynamic = true;
+  ncvm::Setup latheSimple = lathe;
+  latheSimple.timing.dynamic = false;
+  struct Case {
+    const ncvm::Setup* setup;
+    std::string text;
+  };
+  for (const Case& c : {Case{&mill, fiveAxisProgram(120)}, Case{&lathe, latheProgram(60)},
+                        Case{&latheSimple, latheProgram(20)}}) {
+    for (bool trace : {false, true}) {
+      Outcome sync = runWith(*c.setup, c.text, 0, trace);
+      Outcome worker = runWith(*c.setup, c.text, 1, trace);
+      EXPECT_EQ(worker.threaded, twoThreads());
+      EXPECT_EQ(sync.state, worker.state) << c.text.substr(0, 5) << " trace " << trace;
+      EXPECT_EQ(sync.trace, worker.trace);
+      // The programs run to their end (a program that stopped early would test little).
+      EXPECT_EQ(sync.alarm, "") << c.text.substr(0, 5);
+      EXPECT_EQ(worker.alarm, "");
     }
   }
 }
