@@ -22,22 +22,21 @@ namespace ncvm {
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-// The exact test checkStroke makes for one axis, in the same arithmetic.
-bool overMax(const AxisConfig& a, int64_t nm, bool inch) {
+// The position checkStroke compares with an axis's limits (mm or degrees), in the same
+// arithmetic: program units of the machine position, times 25.4 for a linear axis in inch.
+double strokePosition(const AxisConfig& a, int64_t nm, bool inch) {
   const double per =
       a.rotary ? 1e6 : (inch ? static_cast<double>(kNmPerInch) : static_cast<double>(kNmPerMm));
   double pos = static_cast<double>(nm) / per;
   if (a.diameter) pos *= 2.0;
   const double unit = (inch && !a.rotary) ? 25.4 : 1.0;
-  return pos * unit > a.max + 1e-9;
+  return pos * unit;
+}
+bool overMax(const AxisConfig& a, int64_t nm, bool inch) {
+  return strokePosition(a, nm, inch) > a.max + 1e-9;
 }
 bool underMin(const AxisConfig& a, int64_t nm, bool inch) {
-  const double per =
-      a.rotary ? 1e6 : (inch ? static_cast<double>(kNmPerInch) : static_cast<double>(kNmPerMm));
-  double pos = static_cast<double>(nm) / per;
-  if (a.diameter) pos *= 2.0;
-  const double unit = (inch && !a.rotary) ? 25.4 : 1.0;
-  return pos * unit < a.min - 1e-9;
+  return strokePosition(a, nm, inch) < a.min - 1e-9;
 }
 
 // The test is monotonic in nm (a division and a multiplication by positive constants, each
