@@ -10,9 +10,6 @@
 
 namespace ncvm {
 
-namespace {
-constexpr size_t kChunk = 1 << 20;
-
 const char* moveModeName(MoveMode m) {
   switch (m) {
     case MoveMode::Rapid:
@@ -26,6 +23,9 @@ const char* moveModeName(MoveMode m) {
   }
   return "linear";
 }
+
+namespace {
+constexpr size_t kChunk = 1 << 20;
 
 // The same program name as the last one: compared inline, as the names are short.
 // Eight bytes at a time, the last (overlapping) step ending at the end; shorter names four

@@ -11,6 +11,9 @@
 
 namespace ncvm {
 
+// The trace's name of a move mode: "rapid", "linear", "cw", "ccw".
+const char* moveModeName(MoveMode m);
+
 class TraceWriter final : public EventSink {
  public:
   // out == nullptr keeps the whole trace in buffer(). maxBytes stops a runaway trace.

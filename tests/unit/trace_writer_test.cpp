@@ -35,20 +35,6 @@ std::string positions(const double* a, int n) {
   return s + "]";
 }
 
-const char* modeName(MoveMode m) {
-  switch (m) {
-    case MoveMode::Rapid:
-      return "rapid";
-    case MoveMode::Linear:
-      return "linear";
-    case MoveMode::Cw:
-      return "cw";
-    case MoveMode::Ccw:
-      return "ccw";
-  }
-  return "?";
-}
-
 // Passes every event to the writer and keeps the line each move should have.
 struct Reference final : EventSink {
   Reference(TraceWriter& w, const SourceFiles& f, int n) : writer(w), files(f), axes(n) {}
@@ -66,7 +52,7 @@ struct Reference final : EventSink {
     const double simple = e.timeSimple >= 0 ? e.timeSimple : e.time;
     s += fmt::format(
         R"(,"mode":"{}","start":{},"end":{},"mstart":{},"mend":{},"feed":{},"length":{},"time":{},"time_simple":{})",
-        modeName(e.mode), positions(e.start.data(), axes), positions(e.end.data(), axes),
+        moveModeName(e.mode), positions(e.start.data(), axes), positions(e.end.data(), axes),
         positions(e.mstart.data(), axes), positions(e.mend.data(), axes), nineDecimals(e.feed),
         nineDecimals(e.length), nineDecimals(e.time), nineDecimals(simple));
     if (e.arc)
