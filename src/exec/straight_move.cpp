@@ -90,7 +90,7 @@ const Executor::StraightAxes& Executor::fillStraightAxes(bool inch) {
 }
 
 bool straightPathEnabled = true;
-uint64_t straightPathMoves = 0;
+thread_local uint64_t straightPathMoves = 0;
 
 bool Executor::straightMove(const Block& b) {
   if (!straightPathEnabled) return false;

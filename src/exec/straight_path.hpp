@@ -1,5 +1,5 @@
 #pragma once
-// The executor's straight path for plain G01 blocks (straight_move.cpp) gives exactly what the
+// The executor's straight path for plain G01 and G17 arc blocks (straight_move.cpp) gives what the
 // general path gives. Tests switch it off to run the same program both ways and compare the
 // trace and state byte for byte (and read the count to see that it ran); nothing else touches
 // these.
@@ -7,5 +7,7 @@
 
 namespace ncvm {
 extern bool straightPathEnabled;
-extern uint64_t straightPathMoves;  // blocks the straight path has run in this process
+// Blocks the straight path has run on this thread (batch runs execute programs on several
+// threads at once: one counter each, no shared write).
+extern thread_local uint64_t straightPathMoves;
 }  // namespace ncvm
