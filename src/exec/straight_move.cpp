@@ -174,15 +174,20 @@ bool Executor::straightBlock(const StraightWords& w) {
   const bool inch = modal_.unit == InputUnit::Inch;
   const StraightAxes& ax = straightAxes(inch);
   constexpr size_t kXyz = 3;
+  // lengthNm with the axis's constants looked up once per unit: axis words, and R I J.
+  auto lengthNmOf = [&](const Word* wd, size_t slot) {
+    const StraightAxes::Axis& a = ax.axis[slot];
+    const bool point = wd->flags & kHasPoint;
+    const int64_t inc =
+        (!point && !dpi_) ? roundHalfAway(wd->value) : roundToIncrements(wd->value, a.perIncrement);
+    return inc * a.nmPerIncrement;
+  };
   int64_t start[kXyz], target[kXyz], toM[kXyz];
   for (size_t k = 0; k < kXyz; ++k) {
     const StraightAxes::Axis& a = ax.axis[k];
     int64_t t = start[k] = machine_[k] - offset_[k];
     if (const Word* wd = axis[k]; wd && a.present) {
-      const bool point = wd->flags & kHasPoint;
-      const int64_t inc = (!point && !dpi_) ? roundHalfAway(wd->value)
-                                            : roundToIncrements(wd->value, a.perIncrement);
-      int64_t nm = inc * a.nmPerIncrement;
+      int64_t nm = lengthNmOf(wd, k);
       if (a.diameter) nm /= 2;
       t = modal_.incremental ? t + nm : nm;
     }
@@ -209,14 +214,7 @@ bool Executor::straightBlock(const StraightWords& w) {
   MoveEvent& e = straight_;
   if constexpr (Arc) {
     double cu0 = 0, cv0 = 0;
-    // arcCenter in G17 (u = X, v = Y): lengthNm of R, I and J with X's and Y's increments.
-    auto lengthNmOf = [&](const Word* wd, size_t slot) {
-      const StraightAxes::Axis& a = ax.axis[slot];
-      const bool point = wd->flags & kHasPoint;
-      const int64_t inc = (!point && !dpi_) ? roundHalfAway(wd->value)
-                                            : roundToIncrements(wd->value, a.perIncrement);
-      return inc * a.nmPerIncrement;
-    };
+    // arcCenter in G17 (u = X, v = Y): R and I with X's increments, J with Y's.
     const bool cw = motion == 20;
     const double su = static_cast<double>(start[0]), sv = static_cast<double>(start[1]);
     const double eu = static_cast<double>(target[0]), ev = static_cast<double>(target[1]);
