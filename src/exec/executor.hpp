@@ -262,7 +262,7 @@ class Executor {
     AxisArray mend{}, end{};
   };
   LastEmit lastEmit_;
-  // The straight path for plain G01 blocks (straight_move.cpp) and what it keeps between
+  // The straight path for plain G00/G01 blocks and G17 arcs (straight_move.cpp) and what it keeps between
   // blocks: the stroke limits as nanometre bounds per unit (the same test as checkStroke's)
   // and the one event it fills in place.
   bool straightMove(const Block& b);
@@ -275,6 +275,9 @@ class Executor {
   };
   template <bool Arc>
   bool straightBlock(const StraightWords& w);
+  // A G00's time, feed, length and dog-leg corners as rapidMachine computes them (X Y Z only).
+  void straightRapid(MoveEvent& e, const int64_t* fromM, const int64_t* toM, const double* dist,
+                     double sq, bool inch);
   // Per unit (mm, inch), each axis's constants as lengthNm, toProgramUnits and emitMove use
   // them, and its stroke limits as nanometre bounds (the same test as checkStroke's).
   struct StraightAxes {

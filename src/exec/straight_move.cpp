@@ -1,14 +1,15 @@
 // The straight path for the bulk of a CAM program: a plain block (compiler flag kPlainBlock:
-// literal G00-G03 X Y Z F I J K R words) that is a G01 move, or a G02/G03 arc in G17 with R or
-// I/J, on a mill in the plainest modal state. It does exactly what plainMotion -> moveTo /
-// plannedBlock -> arcCenter -> arcWithCenter -> emitMove do for such a block, with the same
-// doubles in the same order and the same alarms, but reads the compiled words directly,
-// converts only the three axes that can move, checks the stroke against limits precomputed in
-// nanometres, and reuses one MoveEvent instead of building a 680-byte one per move. Anything
-// else (a rapid, K, G18/G19 arcs, a zero-length R arc, a mode it does not cover) returns
-// false before it changes anything, and the general path runs the block.
+// literal G00-G03 X Y Z F I J K R words) that is a G00 or G01 move, or a G02/G03 arc in G17
+// with R or I/J, on a mill in the plainest modal state. It does exactly what plainMotion ->
+// moveTo (-> rapidMachine) / plannedBlock -> arcCenter -> arcWithCenter -> emitMove do for
+// such a block, with the same doubles in the same order and the same alarms, but reads the
+// compiled words directly, converts only the three axes that can move, checks the stroke
+// against limits precomputed in nanometres, and reuses one MoveEvent instead of building a
+// 680-byte one per move. Anything else (K, G18/G19 arcs, a zero-length R arc, a mode it does
+// not cover) returns false before it changes anything, and the general path runs the block.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -137,7 +138,8 @@ bool Executor::straightMove(const Block& b) {
   }
   const GCodeInfo* info = nullptr;
   if (code >= 0) {
-    if ((code != 10 && code != 20 && code != 30) || gCall_[static_cast<size_t>(code / 10)] > 0)
+    if ((code != 0 && code != 10 && code != 20 && code != 30) ||
+        gCall_[static_cast<size_t>(code / 10)] > 0)
       return false;
     info = gInfo(code);
     if (!info || info->status == GStatus::NotYet || info->group != 1) return false;
@@ -147,8 +149,8 @@ bool Executor::straightMove(const Block& b) {
   if (arc) {
     // G18/G19 arcs, and an arc without R, I or J (its alarm): the general path.
     if (modal_.plane != 17 || !(wr || wi || wj)) return false;
-  } else if (motion != 10 || wi || wj || wr) {
-    return false;  // a rapid, or I J R in a G01 block: the general path
+  } else if ((motion != 10 && motion != 0) || wi || wj || wr) {
+    return false;  // another mode, or I J R in a G00/G01 block: the general path
   }
   const bool anyAxis = (axis[0] && setup_.axes[0].present) || (axis[1] && setup_.axes[1].present) ||
                        (axis[2] && setup_.axes[2].present);
@@ -157,6 +159,60 @@ bool Executor::straightMove(const Block& b) {
 
   StraightWords w{code, motion, info, {axis[0], axis[1], axis[2]}, feed, wi, wj, wr};
   return arc ? straightBlock<true>(w) : straightBlock<false>(w);
+}
+
+// rapidMachine's time, feed and length for a rapid of X, Y and Z alone: the other axes add
+// nothing to its sums (their distances and times are 0, the dog-leg skips a stop of 0), so
+// three axes give the same doubles. The dog-leg's corner points carry the other axes where
+// they are.
+void Executor::straightRapid(MoveEvent& e, const int64_t* fromM, const int64_t* toM,
+                             const double* dist, double sq, bool inch) {
+  constexpr size_t kXyz = 3;
+  double t[kXyz];
+  double time = 0;
+  for (size_t s = 0; s < kXyz; ++s) {
+    // Rapid rates are machine values in mm/min (deg/min): time from the distance in mm.
+    const double mm = static_cast<double>(toM[s] - fromM[s]) / 1e6;
+    const double rate = setup_.axes[s].rapidRate;
+    t[s] = rate > 0 ? std::fabs(mm) / rate * 60.0 : 0.0;
+    time = std::max(time, t[s]);
+  }
+  e.time = time;
+  e.feed = time > 0 ? std::sqrt(sq) / time * 60.0 : 0.0;
+  if (lrp_) {
+    e.length = std::sqrt(sq);
+    return;
+  }
+  // Dog-leg: every axis at its own rapid rate, so the path bends where an axis arrives.
+  double stops[kXyz] = {t[0], t[1], t[2]};
+  std::sort(stops, stops + kXyz);
+  double length = 0;
+  double prev[kXyz] = {0, 0, 0};
+  const StraightAxes& ax = straightAxes(inch);
+  for (double stop : stops) {
+    if (stop <= 0 || stop >= time) continue;
+    double at[kXyz];
+    double seg = 0;
+    for (size_t s = 0; s < kXyz; ++s) {
+      const double frac = t[s] > 0 ? std::min(stop, t[s]) / t[s] : 1.0;
+      at[s] = dist[s] * frac;
+      seg += (at[s] - prev[s]) * (at[s] - prev[s]);
+    }
+    if (e.pathPoints > 0 && seg == 0) continue;
+    length += std::sqrt(seg);
+    AxisArray& point = e.path[static_cast<size_t>(e.pathPoints++)];
+    for (size_t s = 0; s < kXyz; ++s) {
+      const double scale = setup_.axes[s].rotary ? 1e6 : (inch ? 25.4e6 : 1e6);
+      const int64_t nm = fromM[s] + static_cast<int64_t>(std::llround(at[s] * scale));
+      point[s] = static_cast<double>(nm - offset_[s]) / ax.axis[s].per * ax.axis[s].dia;
+    }
+    for (size_t s = kXyz; s < kMaxAxes; ++s)
+      point[s] = static_cast<double>(machine_[s] - offset_[s]) / ax.axis[s].per * ax.axis[s].dia;
+    for (size_t s = 0; s < kXyz; ++s) prev[s] = at[s];
+  }
+  double seg = 0;
+  for (size_t s = 0; s < kXyz; ++s) seg += (dist[s] - prev[s]) * (dist[s] - prev[s]);
+  e.length = length + std::sqrt(seg);
 }
 
 // The block itself, from its targets to the event: one instance for G01 and one for arcs, so
@@ -295,13 +351,18 @@ bool Executor::straightBlock(const StraightWords& w) {
     checkStroke(all);  // throws the alarm
   }
   if (arc) setProgrammed();
+  const bool rapid = !Arc && motion == 0;
   if constexpr (!Arc) {
-    e.mode = MoveMode::Linear;
+    e.mode = rapid ? MoveMode::Rapid : MoveMode::Linear;
     e.arc = false;
     e.plane = 17;
     e.center = {};
-    e.feed = effectiveFeed();  // moveTo: after the stroke check
+    if (!rapid) e.feed = effectiveFeed();  // moveTo: after the stroke check; a rapid has none
   }
+  // A dog-leg rapid before left its corner points: every other move has none (the general
+  // path's fresh event has them zero; no sink reads past pathPoints, so this is for tidiness).
+  for (int k = 0; k < e.pathPoints; ++k) e.path[static_cast<size_t>(k)] = {};
+  e.pathPoints = 0;
   if (!tailSame || !lastEmitTail_) {
     for (size_t s = kXyz; s < kMaxAxes; ++s) {
       const double p = ax.axis[s].per, d = ax.axis[s].dia;
@@ -327,9 +388,13 @@ bool Executor::straightBlock(const StraightWords& w) {
   // order; the other axes add 0), the event's coordinates as emitMove converts them, the
   // bookkeeping.
   double sq = 0;
+  int64_t fromM[kXyz];  // the rapid's per-axis times and dog-leg need the start
+  double dist[kXyz];    // program units, without the diameter factor
   for (size_t s = 0; s < kXyz; ++s) {
     const double p = ax.axis[s].per, d = ax.axis[s].dia;
     const double diff = static_cast<double>(toM[s] - machine_[s]) / p;
+    fromM[s] = machine_[s];
+    dist[s] = diff;
     sq += diff * diff;
     if (same) {
       e.mstart[s] = lastEmit_.mend[s];
@@ -345,17 +410,22 @@ bool Executor::straightBlock(const StraightWords& w) {
     machine_[s] = toM[s];
   }
   if constexpr (!Arc) {
-    e.length = std::sqrt(sq);
-    e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+    if (rapid) {
+      straightRapid(e, fromM, toM, dist, sq, inch);
+    } else {
+      e.length = std::sqrt(sq);
+      e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
+    }
   }
   e.at = origin_;
   e.exactStop = exactStop_;
   e.inch = inch;
-  e.perRev = modal_.feedPerRev ? modal_.feed : 0;
+  e.perRev = modal_.feedPerRev && !rapid ? modal_.feed : 0;
   lastEmit_.valid = true;
   lastEmit_.inch = inch;
   ++stats_.moves;
-  stats_.feedLength += e.length;
+  if (rapid) stats_.rapidLength += e.length;
+  else stats_.feedLength += e.length;
   simTime_ += e.time;  // advanceTime
   stats_.time += e.time;
   realSink_.onMove(e);  // sink(): nothing is deferred without compensation

@@ -174,3 +174,29 @@ TEST(StraightMove, ArcsAsTheGeneralPathCutsThem) {
       "O0006\nG90 G01 X0 Y0 F100.\nG02 X10. Y0 R5.\nG02 X10. Y0 Z-1. R5.\nX20. Y0 R5.\nM30\n",
       "zero-length R arc");
 }
+
+// Rapids: dog-leg (LRP = 0, the default) with axes at different rates, equal times, one axis,
+// G91, offsets, inch, a rotary axis standing elsewhere, straight-line rapids (LRP = 1), a
+// rapid's stroke alarm, F in a G00 block (no feed alarm for a rapid), and moves after a
+// dog-leg (its corner points must not stay in the reused event).
+TEST(StraightMove, RapidsAsTheGeneralPathMovesThem) {
+  const std::string rapids =
+      "O0007\nG90 G21 G17 G54 G94\nG10 L2 P1 X10. Y-5. Z2.\nG00 X0 Y0 Z1.\nX100. Y30. Z-20.\n"
+      "X50. Y80.\nX60.\nY10. Z10.\nX-20. Y-20. Z-20.\nG01 X-19. F500.\nG00 X10. Y10. F800.\n"
+      "G02 X20. Y10. R5.\nG00 X0 Y0 Z50.\nG91 X12.5 Y-3.25 Z-1.\nX0.001\nG90\nG55 X1. Y1.\n"
+      "G54\nG00 A30.\nX3. Y4. Z5.\nG20 X1. Y1.\nX0.5 Y2.\nG21\nG00 X5 Y7\n"
+      "S1000 M03\nG95 F0.2\nG00 X7. Y8.\nG01 X8. F.1\nG00 X9.\nG94 F500.\nM30\n";
+  ncvm::Setup rates =
+      fromToml("[axes.X]\nrapid = 30000\n[axes.Y]\nrapid = 24000\n[axes.Z]\nrapid = 15000\n");
+  expectSame(rates, rapids, "dog-leg, different rates");
+  expectSame(defaultSetup(), rapids, "dog-leg, default rates");
+  expectSame(fromToml("LRP = 1\n"), rapids, "linear rapids");
+  expectSame(fromToml("[machine]\nunits = \"inch\"\n"), rapids, "rapids inch");
+  ncvm::Setup dynamic = fromToml("[timing]\nmodel = \"dynamic\"\n");
+  expectSame(dynamic, rapids, "rapids, dynamic time model");
+  ncvm::Setup noZRate = fromToml("[axes.Z]\nrapid = 0\n");
+  expectSame(noZRate, rapids, "an axis without a rapid rate");
+  expectSame(fromToml("[axes.Y]\nmax = 50.0\n"), rapids, "rapid over travel", false);
+  expectSame(defaultSetup(), "O0008\nG90 G00 X1. F0\nX2. Y3.\nG00 F-1. X3.\nM30\n",
+             "F in rapids");
+}
