@@ -25,7 +25,9 @@ int64_t toInteger(double v) {
 // SIN and COS are exact at multiples of 90 degrees, as on the control (COS[90] is 0, so
 // TAN[90] divides by zero).
 double sinDeg(double d) {
-  double r = std::fmod(d, 360.0);
+  // fmod is exact and returns d itself below one turn: the call (about 70 instructions) only
+  // for angles beyond it.
+  double r = (d > -360.0 && d < 360.0) ? d : std::fmod(d, 360.0);
   if (r < 0) r += 360.0;
   if (r == 0 || r == 180) return 0.0;
   if (r == 90) return 1.0;

@@ -266,13 +266,22 @@ class Executor {
   // blocks: the stroke limits as nanometre bounds per unit (the same test as checkStroke's)
   // and the one event it fills in place.
   bool straightMove(const Block& b);
-  // What straightMove read of the block's words (nullptr: not given).
+  // What straightMove read of the block's words: literal values, or those of #variables and
+  // expressions as gatherWords reads them (a vacant variable drops its word; a value counts
+  // as written with a decimal point).
   struct StraightWords {
+    struct Number {
+      double v = 0;
+      bool given = false, point = false;
+    };
     int code = -1, motion = 10;  // G code x10 in the block (-1: none); the motion it gives
     const GCodeInfo* info = nullptr;
-    const Word* axis[3] = {nullptr, nullptr, nullptr};  // X Y Z
-    const Word *feed = nullptr, *i = nullptr, *j = nullptr, *r = nullptr;
+    Number axis[3];  // X Y Z
+    Number feed, i, j, r;
   };
+  // gatherWords for a block that is not kPlainBlock but could be one with its variables read:
+  // false, having read nothing, for any other block.
+  bool straightVariableWords(const Block& b, const Word* words, StraightWords& w);
   template <bool Arc>
   bool straightBlock(const StraightWords& w);
   // A G00's time, feed, length and dog-leg corners as rapidMachine computes them (X Y Z only).

@@ -267,7 +267,7 @@ bool Executor::plainMotion(Words& w) {
 }
 
 void Executor::execNc(const Block& b) {
-  if ((b.flags & kPlainBlock) && straightMove(b)) return;
+  if (straightMove(b)) return;  // plain blocks, and those that are with their variables read
   Words w;
   if (b.flags & kPlainBlock) {
     gatherPlainWords(b, w);

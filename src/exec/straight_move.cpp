@@ -101,42 +101,46 @@ bool Executor::straightMove(const Block& b) {
       (crc_ && crc_->active()) || modal_.css || programmedEnd_ || noseEnd_ || threadMove_)
     return false;
   const Word* words = frames_.back().prog->words.data() + b.firstWord;
-  int code = -1;
-  const Word* axis[3] = {nullptr, nullptr, nullptr};
-  const Word* feed = nullptr;
-  const Word *wi = nullptr, *wj = nullptr, *wr = nullptr;
-  for (uint32_t k = 0; k < b.nWords; ++k) {
-    const Word& wd = words[k];
-    switch (wd.letter) {
-      case 'G':
-        code = static_cast<int>(wd.value * 10.0);
-        break;
-      case 'X':
-        axis[0] = &wd;
-        break;
-      case 'Y':
-        axis[1] = &wd;
-        break;
-      case 'Z':
-        axis[2] = &wd;
-        break;
-      case 'F':
-        feed = &wd;
-        break;
-      case 'I':
-        wi = &wd;
-        break;
-      case 'J':
-        wj = &wd;
-        break;
-      case 'R':
-        wr = &wd;
-        break;
-      default:
-        return false;  // K: the general path decides what it means
+  StraightWords w;
+  if (!(b.flags & kPlainBlock)) {
+    if (!straightVariableWords(b, words, w)) return false;
+  } else {
+    for (uint32_t k = 0; k < b.nWords; ++k) {
+      const Word& wd = words[k];
+      StraightWords::Number* slot = nullptr;
+      switch (wd.letter) {
+        case 'G':
+          w.code = static_cast<int>(wd.value * 10.0);
+          continue;
+        case 'X':
+          slot = &w.axis[0];
+          break;
+        case 'Y':
+          slot = &w.axis[1];
+          break;
+        case 'Z':
+          slot = &w.axis[2];
+          break;
+        case 'F':
+          slot = &w.feed;
+          break;
+        case 'I':
+          slot = &w.i;
+          break;
+        case 'J':
+          slot = &w.j;
+          break;
+        case 'R':
+          slot = &w.r;
+          break;
+        default:
+          return false;  // K: the general path decides what it means
+      }
+      *slot = StraightWords::Number{wd.value, true, (wd.flags & kHasPoint) != 0};
     }
   }
-  const GCodeInfo* info = nullptr;
+  const int code = w.code;
+  const GCodeInfo*& info = w.info;
   if (code >= 0) {
     if ((code != 0 && code != 10 && code != 20 && code != 30) ||
         gCall_[static_cast<size_t>(code / 10)] > 0)
@@ -144,21 +148,92 @@ bool Executor::straightMove(const Block& b) {
     info = gInfo(code);
     if (!info || info->status == GStatus::NotYet || info->group != 1) return false;
   }
-  const int motion = code >= 0 ? code : modal_.motion;
+  const int motion = w.motion = code >= 0 ? code : modal_.motion;
   const bool arc = motion == 20 || motion == 30;
+  const bool ij = w.i.given || w.j.given;
   if (arc) {
     // G18/G19 arcs, and an arc without R, I or J (its alarm): the general path.
-    if (modal_.plane != 17 || !(wr || wi || wj)) return false;
-  } else if ((motion != 10 && motion != 0) || wi || wj || wr) {
+    if (modal_.plane != 17 || !(w.r.given || ij)) return false;
+  } else if ((motion != 10 && motion != 0) || ij || w.r.given) {
     return false;  // another mode, or I J R in a G00/G01 block: the general path
   }
-  const bool anyAxis = (axis[0] && setup_.axes[0].present) || (axis[1] && setup_.axes[1].present) ||
-                       (axis[2] && setup_.axes[2].present);
+  const bool anyAxis = (w.axis[0].given && setup_.axes[0].present) ||
+                       (w.axis[1].given && setup_.axes[1].present) ||
+                       (w.axis[2].given && setup_.axes[2].present);
   // F alone, an absent axis, an arc with nothing but R: rare, the general path.
-  if (!anyAxis && !(arc && (wi || wj))) return false;
-
-  StraightWords w{code, motion, info, {axis[0], axis[1], axis[2]}, feed, wi, wj, wr};
+  if (!anyAxis && !(arc && ij)) return false;
   return arc ? straightBlock<true>(w) : straightBlock<false>(w);
+}
+
+// gatherWords for the words a straight block may have: first the letters and kinds alone
+// (nothing read, so a block that is no straight move costs only this look), then the values
+// in block order, with gatherWords' range alarm. Reading a variable or an expression changes
+// nothing, so when the general path runs the block after all it reads the same.
+bool Executor::straightVariableWords(const Block& b, const Word* words, StraightWords& w) {
+  constexpr uint32_t kLetters = (1u << ('G' - 'A')) | (1u << ('X' - 'A')) |
+                                (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')) |
+                                (1u << ('F' - 'A')) | (1u << ('I' - 'A')) |
+                                (1u << ('J' - 'A')) | (1u << ('R' - 'A'));
+  uint32_t seen = 0;
+  for (uint32_t k = 0; k < b.nWords; ++k) {
+    const Word& wd = words[k];
+    if (wd.letter < 'A' || wd.letter > 'Z') return false;  // a name, ,C or ,R
+    const uint32_t bit = 1u << (wd.letter - 'A');
+    if (!(bit & kLetters) || (seen & bit)) return false;  // a repeated letter: the general path
+    seen |= bit;
+    if (wd.kind == WordKind::Literal) {
+      if (wd.flags & kLongNumber) return false;  // the digit-count check
+      if (wd.letter == 'G' && !(wd.value == 0 || wd.value == 1 || wd.value == 2 || wd.value == 3))
+        return false;
+    } else if (wd.letter == 'G') {
+      return false;
+    }
+  }
+  for (uint32_t k = 0; k < b.nWords; ++k) {
+    const Word& wd = words[k];
+    double v = wd.value;
+    bool point = (wd.flags & kHasPoint) != 0;
+    if (wd.kind != WordKind::Literal) {
+      const Value x = wd.kind == WordKind::Expr ? eval(wd.a) : readVar(wd.a);
+      if (x.null) continue;  // a vacant variable drops the whole word
+      v = wd.kind == WordKind::NegVar ? -x.v : x.v;
+      point = true;
+    }
+    if (!std::isfinite(v) || std::fabs(v) > 1e12) {
+      AlarmError e(AlarmId::FloatOverflow, fmt::format("{} value out of range", wd.letter));
+      e.col = wd.col;
+      throw e;
+    }
+    StraightWords::Number* slot = nullptr;
+    switch (wd.letter) {
+      case 'G':
+        w.code = static_cast<int>(v * 10.0);
+        continue;
+      case 'X':
+        slot = &w.axis[0];
+        break;
+      case 'Y':
+        slot = &w.axis[1];
+        break;
+      case 'Z':
+        slot = &w.axis[2];
+        break;
+      case 'F':
+        slot = &w.feed;
+        break;
+      case 'I':
+        slot = &w.i;
+        break;
+      case 'J':
+        slot = &w.j;
+        break;
+      default:
+        slot = &w.r;
+        break;
+    }
+    *slot = StraightWords::Number{v, true, point};
+  }
+  return true;
 }
 
 // rapidMachine's time, feed and length for a rapid of X, Y and Z alone: the other axes add
@@ -219,8 +294,8 @@ void Executor::straightRapid(MoveEvent& e, const int64_t* fromM, const int64_t* 
 // that the G01 blocks, nearly all of a program, are compiled without the arc's code around.
 template <bool Arc>
 bool Executor::straightBlock(const StraightWords& w) {
-  const Word* const* axis = w.axis;
-  const Word *feed = w.feed, *wi = w.i, *wj = w.j, *wr = w.r;
+  const StraightWords::Number* axis = w.axis;
+  const StraightWords::Number &feed = w.feed, &wi = w.i, &wj = w.j, &wr = w.r;
   const int code = w.code, motion = w.motion;
   const GCodeInfo* info = w.info;
   constexpr bool arc = Arc;
@@ -231,19 +306,18 @@ bool Executor::straightBlock(const StraightWords& w) {
   const StraightAxes& ax = straightAxes(inch);
   constexpr size_t kXyz = 3;
   // lengthNm with the axis's constants looked up once per unit: axis words, and R I J.
-  auto lengthNmOf = [&](const Word* wd, size_t slot) {
+  auto lengthNmOf = [&](const StraightWords::Number& wd, size_t slot) {
     const StraightAxes::Axis& a = ax.axis[slot];
-    const bool point = wd->flags & kHasPoint;
     const int64_t inc =
-        (!point && !dpi_) ? roundHalfAway(wd->value) : roundToIncrements(wd->value, a.perIncrement);
+        (!wd.point && !dpi_) ? roundHalfAway(wd.v) : roundToIncrements(wd.v, a.perIncrement);
     return inc * a.nmPerIncrement;
   };
   int64_t start[kXyz], target[kXyz], toM[kXyz];
   for (size_t k = 0; k < kXyz; ++k) {
     const StraightAxes::Axis& a = ax.axis[k];
     int64_t t = start[k] = machine_[k] - offset_[k];
-    if (const Word* wd = axis[k]; wd && a.present) {
-      int64_t nm = lengthNmOf(wd, k);
+    if (axis[k].given && a.present) {
+      int64_t nm = lengthNmOf(axis[k], k);
       if (a.diameter) nm /= 2;
       t = modal_.incremental ? t + nm : nm;
     }
@@ -251,7 +325,7 @@ bool Executor::straightBlock(const StraightWords& w) {
   }
   // plannedBlock's zero-length R arc (no movement in the plane) becomes a G01 there.
   if constexpr (Arc)
-    if (wr && target[0] == start[0] && target[1] == start[1]) return false;
+    if (wr.given && target[0] == start[0] && target[1] == start[1]) return false;
 
   // From here on this is the block's execution, in the general path's order.
   // modal_'s derived fields follow its G codes after every block: only a G word changes them.
@@ -260,10 +334,10 @@ bool Executor::straightBlock(const StraightWords& w) {
     deriveModal();
   }
   exactStop_ = modal_.g[15] == 610;
-  if (feed) {
-    double fv = feed->value;
+  if (feed.given) {
+    double fv = feed.v;
     if (fv < 0) throw AlarmError(AlarmId::IllegalMinus, "F");
-    if (!(feed->flags & kHasPoint) && !dpi_ && modal_.feedPerRev)
+    if (!feed.point && !dpi_ && modal_.feedPerRev)
       fv *= leastIncrement(setup_.increment, modal_.unit);
     modal_.feed = fv;
   }
@@ -277,7 +351,7 @@ bool Executor::straightBlock(const StraightWords& w) {
     const double tolNm = arcTolerance_ * 1e6;
     cu0 = su;
     cv0 = sv;
-    if (wr) {
+    if (wr.given) {
       const double r = static_cast<double>(lengthNmOf(wr, 0));
       const double du = eu - su, dv = ev - sv;
       const double d = std::hypot(du, dv);
@@ -295,8 +369,8 @@ bool Executor::straightBlock(const StraightWords& w) {
         cv0 = (sv + ev) / 2.0 + side * h * pv;
       }
     } else {
-      cu0 = su + (wi ? static_cast<double>(lengthNmOf(wi, 0)) : 0.0);
-      cv0 = sv + (wj ? static_cast<double>(lengthNmOf(wj, 1)) : 0.0);
+      cu0 = su + (wi.given ? static_cast<double>(lengthNmOf(wi, 0)) : 0.0);
+      cv0 = sv + (wj.given ? static_cast<double>(lengthNmOf(wj, 1)) : 0.0);
       const double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
       if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
       if (std::fabs(re - rs) > tolNm)

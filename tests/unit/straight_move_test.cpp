@@ -200,3 +200,27 @@ TEST(StraightMove, RapidsAsTheGeneralPathMovesThem) {
   expectSame(defaultSetup(), "O0008\nG90 G00 X1. F0\nX2. Y3.\nG00 F-1. X3.\nM30\n",
              "F in rapids");
 }
+
+// Blocks whose words are #variables or expressions, as macros write them: the straight path
+// reads them as gatherWords does (a vacant variable drops its word, a value counts as given
+// with a decimal point, -#1, [expressions]), and leaves G#1, repeated letters and K to the
+// general path. Alarms: a value out of range, a bad variable number, a division by zero.
+TEST(StraightMove, VariableWordsAsTheGeneralPathReadsThem) {
+  const std::string vars =
+      "O0009\nG90 G21 G17 G54 G94\n#1=12.3456789\n#2=-4.5\n#3=1500\n#4=5.\n#5=2\n"
+      "G00 X#1 Y#2 Z5.\nG01 Z-#4 F#3\nX[#1+1] Y[#2*2]\nX#30 Y3.\nX#30\nG#5 X20. Y0 R#4\n"
+      "G03 X[#4*2.8] Y0 I-3. J#30\nG01 X-#1 Y-#2 F[#3/2]\n#6=0\nWHILE[#6LT20]DO1\n"
+      "#7=#6*18\nG01 X[10*COS[#7]] Y[10*SIN[#7]] Z-1.\nG02 X[10*COS[#7+9]] Y[10*SIN[#7+9]] R10.\n"
+      "#6=#6+1\nEND1\nG00 X0 Y0 Z#4\nG01 X#1 X#2 F100.\nG01 X1. K#4\nG01 X#1 Y5. ,R1.\nX30.\n"
+      "G91 X#5 Y#5\nG90 G20 X#5 Y1.\nG21 G01 X1 F#3\nM30\n";
+  expectSame(defaultSetup(), vars, "variable words mm");
+  expectSame(fromToml("[machine]\nunits = \"inch\"\n"), vars, "variable words inch");
+  expectSame(fromToml("DPI = 1\n"), vars, "variable words DPI");
+  const Outcome fast = run(defaultSetup(), vars, true);
+  EXPECT_GT(fast.straight, 45u) << "the loop's G01 and G02 blocks take the straight path";
+  ncvm::Setup setup = defaultSetup();
+  expectSame(setup, "O0010\nG90 G01 F100.\n#1=10000000*1000000\nX1.\nX#1\nM30\n", "value out of range");
+  expectSame(setup, "O0010\nG90 G01 F100.\n#1=0\nX1.\nX[1/#1]\nM30\n", "division by zero");
+  expectSame(setup, "O0010\nG90 G01 F100.\nX1.\nY#[-5]\nM30\n", "bad variable number");
+  expectSame(setup, "O0010\nG90 G01 F100.\n#1=-5\nX1.\nF#1 X2.\nM30\n", "negative F");
+}
