@@ -368,7 +368,11 @@ TEST_F(ServerTest, ConcurrentClientsAreIsolated) {
 
 TEST_F(ServerTest, RunawayProgramTimesOut) {
   auto start = std::chrono::steady_clock::now();
-  auto r = post(json{{"program", "O0001\nWHILE[1EQ1]DO1\n#1=#1+1\nEND1\nM30\n"}}.dump());
+  // The setup's own block limit (10^8 by default) is raised to the server's cap: 10^8 of these
+  // blocks take about a second on a fast machine, less than the 1.5 s timeout.
+  auto r = post(json{{"program", "O0001\nWHILE[1EQ1]DO1\n#1=#1+1\nEND1\nM30\n"},
+                     {"setup", "[limits]\nmax_blocks = 1000000000\n"}}
+                    .dump());
   auto took = std::chrono::steady_clock::now() - start;
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 503);
