@@ -230,7 +230,7 @@ static int64_t roundedIndex(double v) {
 EndReason Executor::run(const Program& main) {
   try {
     enter(&main, FrameKind::Main, 1, false);
-    while (step()) {
+    while (straightRun() && step()) {
     }
     if (cornerHold_ || crcCorner_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the program ends after a ,C/,R block");
     crcDrain();  // the end of the program releases whatever compensation still holds
@@ -285,8 +285,7 @@ bool Executor::step() {
   }
   const Block& b = prog.blocks[f.pc];
   block_ = &b;
-  if (stats_.blocks >= setup_.limits.maxBlocks)
-    throw AlarmError(AlarmId::BlockLimit, fmt::format("limits.max_blocks = {}", setup_.limits.maxBlocks));
+  if (stats_.blocks >= setup_.limits.maxBlocks) blockLimitAlarm();
   ++stats_.blocks;
   if (b.skipLevel && setup_.blockSkip[b.skipLevel]) {
     ++f.pc;
@@ -361,9 +360,16 @@ bool Executor::step() {
       execNc(b);
       break;
   }
-  if (simTime_ > setup_.limits.maxTimeSeconds)
-    throw AlarmError(AlarmId::TimeLimit, fmt::format("limits.max_time_s = {}", setup_.limits.maxTimeSeconds));
+  if (simTime_ > setup_.limits.maxTimeSeconds) timeLimitAlarm();
   return !ended_;
+}
+
+void Executor::blockLimitAlarm() const {
+  throw AlarmError(AlarmId::BlockLimit, fmt::format("limits.max_blocks = {}", setup_.limits.maxBlocks));
+}
+
+void Executor::timeLimitAlarm() const {
+  throw AlarmError(AlarmId::TimeLimit, fmt::format("limits.max_time_s = {}", setup_.limits.maxTimeSeconds));
 }
 
 void Executor::advanceTime(double seconds) {

@@ -199,6 +199,12 @@ class Executor {
   // executor.cpp
   void enter(const Program* p, FrameKind kind, int repeats, bool codeCalled);
   bool step();  // one block; false when the run ends
+  // step() for the plain blocks from the current one on, as long as the straight path takes
+  // them (the same bookkeeping per block, the modal state checked once); a plain block it
+  // refuses runs the general way and ends the run. False when the program ended.
+  bool straightRun();
+  [[noreturn]] void blockLimitAlarm() const;
+  [[noreturn]] void timeLimitAlarm() const;
   void jumpTo(int32_t label, bool computed);
   void doReturn(int32_t label);  // M99 [P]
   void callSub(const Program* p, int repeats, bool codeCalled);
@@ -226,6 +232,7 @@ class Executor {
 
   // nc_block.cpp
   void execNc(const Block& b);
+  void execNcGeneral(const Block& b);  // execNc without the straight path
   bool plainMotion(Words& w);  // execNc's fast path for plain G00-G03 blocks
   void gatherWords(const Block& b, Words& w);
   void gatherPlainWords(const Block& b, Words& w) const;  // a kPlainBlock block's words
@@ -265,7 +272,9 @@ class Executor {
   // The straight path for plain G00/G01 blocks and G17 arcs (straight_move.cpp) and what it keeps between
   // blocks: the stroke limits as nanometre bounds per unit (the same test as checkStroke's)
   // and the one event it fills in place.
-  bool straightMove(const Block& b);
+  // modalChecked: the block before was a straight move in this run, so the modal state still
+  // passes the test (a straight block changes only its motion group, feed and position).
+  bool straightMove(const Block& b, bool modalChecked = false);
   // What straightMove read of the block's words: literal values, or those of #variables and
   // expressions as gatherWords reads them (a vacant variable drops its word; a value counts
   // as written with a decimal point).
@@ -282,7 +291,7 @@ class Executor {
   // gatherWords for a block that is not kPlainBlock but could be one with its variables read:
   // false, having read nothing, for any other block.
   bool straightVariableWords(const Block& b, const Word* words, StraightWords& w);
-  template <bool Arc>
+  template <bool Arc, bool Rapid>
   bool straightBlock(const StraightWords& w);
   // A G00's time, feed, length and dog-leg corners as rapidMachine computes them (X Y Z only).
   void straightRapid(MoveEvent& e, const int64_t* fromM, const int64_t* toM, const double* dist,

@@ -93,12 +93,46 @@ const Executor::StraightAxes& Executor::fillStraightAxes(bool inch) {
 bool straightPathEnabled = true;
 thread_local uint64_t straightPathMoves = 0;
 
-bool Executor::straightMove(const Block& b) {
+bool Executor::straightRun() {
+  if (!straightPathEnabled) return true;
+  Frame& f = frames_.back();  // a straight block pushes no frame: the reference stays valid
+  const Program& prog = *f.prog;
+  const size_t n = prog.blocks.size();
+  bool checked = false;
+  while (f.pc < n) {
+    const Block& b = prog.blocks[f.pc];
+    // A block skip level (step() decides it) or any other block: step() runs it.
+    if (b.kind != BlockKind::Nc || !(b.flags & kPlainBlock) || b.skipLevel) return true;
+    // step()'s bookkeeping, in its order.
+    block_ = &b;
+    if (stats_.blocks >= setup_.limits.maxBlocks) blockLimitAlarm();
+    ++stats_.blocks;
+    if (b.n >= 0) lastN_ = b.n;
+    origin_.file = b.loc.file;
+    origin_.line = b.loc.line;
+    origin_.n = b.n;
+    origin_.programName = &prog.label;
+    // After a straight block there is no compensation and nothing held (its modal test).
+    deferring_ = checked ? false : crcBusy();
+    if (straightMove(b, checked)) {
+      checked = true;
+      if (simTime_ > setup_.limits.maxTimeSeconds) timeLimitAlarm();
+      continue;
+    }
+    execNcGeneral(b);  // the state may change in any way now: the run ends with this block
+    if (simTime_ > setup_.limits.maxTimeSeconds) timeLimitAlarm();
+    return !ended_;
+  }
+  return true;  // the end of the program: step() decides what follows
+}
+
+bool Executor::straightMove(const Block& b, bool modalChecked) {
   if (!straightPathEnabled) return false;
   // The modal state plainMotion requires, and none of what emitMove would add to the event.
-  if (lathe_ || modal_.g[7] != 400 || modal_.g[9] != 800 || modal_.g[17] != 150 ||
-      !modalCalls_.empty() || xf_.active() || cornerHold_ || crcCorner_ || !pending_.empty() ||
-      (crc_ && crc_->active()) || modal_.css || programmedEnd_ || noseEnd_ || threadMove_)
+  if (!modalChecked &&
+      (lathe_ || modal_.g[7] != 400 || modal_.g[9] != 800 || modal_.g[17] != 150 ||
+       !modalCalls_.empty() || xf_.active() || cornerHold_ || crcCorner_ || !pending_.empty() ||
+       (crc_ && crc_->active()) || modal_.css || programmedEnd_ || noseEnd_ || threadMove_))
     return false;
   const Word* words = frames_.back().prog->words.data() + b.firstWord;
   StraightWords w;
@@ -162,7 +196,8 @@ bool Executor::straightMove(const Block& b) {
                        (w.axis[2].given && setup_.axes[2].present);
   // F alone, an absent axis, an arc with nothing but R: rare, the general path.
   if (!anyAxis && !(arc && ij)) return false;
-  return arc ? straightBlock<true>(w) : straightBlock<false>(w);
+  if (arc) return straightBlock<true, false>(w);
+  return motion == 0 ? straightBlock<false, true>(w) : straightBlock<false, false>(w);
 }
 
 // gatherWords for the words a straight block may have: first the letters and kinds alone
@@ -290,9 +325,9 @@ void Executor::straightRapid(MoveEvent& e, const int64_t* fromM, const int64_t* 
   e.length = length + std::sqrt(seg);
 }
 
-// The block itself, from its targets to the event: one instance for G01 and one for arcs, so
-// that the G01 blocks, nearly all of a program, are compiled without the arc's code around.
-template <bool Arc>
+// The block itself, from its targets to the event: one instance each for G01, G00 and arcs, so
+// that the G01 blocks, nearly all of a program, are compiled without the others' code around.
+template <bool Arc, bool Rapid>
 bool Executor::straightBlock(const StraightWords& w) {
   const StraightWords::Number* axis = w.axis;
   const StraightWords::Number &feed = w.feed, &wi = w.i, &wj = w.j, &wr = w.r;
@@ -425,7 +460,7 @@ bool Executor::straightBlock(const StraightWords& w) {
     checkStroke(all);  // throws the alarm
   }
   if (arc) setProgrammed();
-  const bool rapid = !Arc && motion == 0;
+  constexpr bool rapid = Rapid;
   if constexpr (!Arc) {
     e.mode = rapid ? MoveMode::Rapid : MoveMode::Linear;
     e.arc = false;
@@ -484,7 +519,7 @@ bool Executor::straightBlock(const StraightWords& w) {
     machine_[s] = toM[s];
   }
   if constexpr (!Arc) {
-    if (rapid) {
+    if constexpr (Rapid) {
       straightRapid(e, fromM, toM, dist, sq, inch);
     } else {
       e.length = std::sqrt(sq);
@@ -508,7 +543,8 @@ bool Executor::straightBlock(const StraightWords& w) {
   return true;
 }
 
-template bool Executor::straightBlock<true>(const StraightWords&);
-template bool Executor::straightBlock<false>(const StraightWords&);
+template bool Executor::straightBlock<true, false>(const StraightWords&);
+template bool Executor::straightBlock<false, false>(const StraightWords&);
+template bool Executor::straightBlock<false, true>(const StraightWords&);
 
 }  // namespace ncvm

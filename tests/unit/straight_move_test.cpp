@@ -224,3 +224,22 @@ TEST(StraightMove, VariableWordsAsTheGeneralPathReadsThem) {
   expectSame(setup, "O0010\nG90 G01 F100.\nX1.\nY#[-5]\nM30\n", "bad variable number");
   expectSame(setup, "O0010\nG90 G01 F100.\n#1=-5\nX1.\nF#1 X2.\nM30\n", "negative F");
 }
+
+// A run of straight blocks (Executor::straightRun) keeps step()'s bookkeeping per block: the
+// block and time limits alarm at the same block, block skip is decided as before, and a plain
+// block the straight path refuses in the middle of a run (K, G18) runs the
+// general way, the run going on after it.
+TEST(StraightMove, RunsOfStraightBlocksKeepTheBlockBookkeeping) {
+  const std::string run =
+      "O0011\nG90 G21 G17 G54 G94 G01 F1000.\nN10 X1. Y1.\nX2.\nN30 X3. Y2.\n#101=#4114\n/X4. Y3.\n/2 X5.\n"
+      "X6. Y4.\nG18 G02 X8. Z0 R1.\nG17\nX9.\nX10. K1.\nX11. Y5.\nG00 X0 Y0\nM30\n";
+  expectSame(defaultSetup(), run, "a run");
+  expectSame(fromToml("[block_skip]\n1 = true\n"), run, "block skip 1");
+  expectSame(fromToml("[block_skip]\n2 = true\n"), run, "block skip 2");
+  for (int limit : {3, 4, 5, 6, 9, 12})
+    expectSame(fromToml(fmt::format("[limits]\nmax_blocks = {}\n", limit)), run,
+               fmt::format("max_blocks {}", limit), false);
+  for (double seconds : {0.05, 0.2, 0.5})
+    expectSame(fromToml(fmt::format("[limits]\nmax_time_s = {}\n", seconds)), run,
+               fmt::format("max_time_s {}", seconds), false);
+}
