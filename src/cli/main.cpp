@@ -8,6 +8,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -24,8 +25,8 @@
 #include "report/atomic_file.hpp"
 #include "report/html_report.hpp"
 #include "report/trace_writer.hpp"
+#include "cli/serve_options.hpp"
 #include "server/safe_path.hpp"
-#include "server/web_server.hpp"
 #include "server/worker.hpp"
 
 namespace {
@@ -360,92 +361,24 @@ void printCodeTable() {
   }
 }
 
-struct ServeOptions {
-  int port = 8765;
-  std::string bind = "127.0.0.1";
-  std::string setupPath;
-  std::vector<std::string> roots;
-  std::string program;
-  double timeoutSeconds = 10;
-  uint64_t maxBlocks = 2'000'000;
-  int threads = 8;
-};
-
-// A folder beside the executable (../share/ncvm/NAME when installed, ../NAME in a build
-// folder), else `fallback` (the source tree), else nothing; $ENV overrides.
-std::string folderBesideBinary(const char* env, const std::string& installed, const std::string& build,
-                               const std::string& fallback) {
+// `ncvm serve` runs ncvm-serve beside this binary with the same arguments: the web server
+// and its HTTP library (with OpenSSL and brotli) live there, so that every other command
+// starts without loading them (about 2.7 ms of CPU a start, docs/performance.md).
+int startServer(int argc, char** argv) {
   namespace fs = std::filesystem;
-  if (const char* e = std::getenv(env); e && *e) return e;
   std::error_code ec;
-  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec)
-    for (const auto& rel : {installed, build}) {
-      if (rel.empty()) continue;
-      fs::path p = exe.parent_path() / rel;
-      if (fs::is_directory(p, ec)) return fs::canonical(p, ec).string();
-    }
-  if (!fallback.empty() && fs::is_directory(fallback, ec)) return fallback;
-  return {};
-}
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-int serveCommand(const ServeOptions& o) {
-  namespace fs = std::filesystem;
-  server::ServerConfig c;
-  c.bind = o.bind;
-  c.port = o.port;
-  c.threads = o.threads;
-  c.caps.maxBlocks = o.maxBlocks;
-  c.worker.timeout = std::chrono::milliseconds(static_cast<int64_t>(o.timeoutSeconds * 1000));
-  c.webDir = folderBesideBinary("NCVM_WEB", "../share/ncvm/web", "../web", "");
-  std::string examples = folderBesideBinary("NCVM_EXAMPLES", "../share/ncvm/examples", "", NCVM_SOURCE_EXAMPLES);
-  if (!examples.empty()) c.catalog.add("examples", examples);
-  for (const auto& r : o.roots) {
-    std::error_code ec;
-    if (!fs::is_directory(r, ec)) throw std::runtime_error("--root " + r + ": not a folder");
-    fs::path p = fs::canonical(r);
-    c.catalog.add(p.filename().string(), p);
-  }
-  if (!o.program.empty()) {
-    fs::path p = fs::canonical(o.program);
-    const server::Root* root = nullptr;
-    for (const auto& r : c.catalog.roots())
-      if (server::resolveInside(r.path, fs::relative(p, fs::canonical(r.path)).generic_string()) == p) root = &r;
-    if (!root) {
-      c.catalog.add(p.parent_path().filename().string(), p.parent_path());
-      root = &c.catalog.roots().back();
-    }
-    c.startRoot = root->name;
-    c.startPath = fs::relative(p, fs::canonical(root->path)).generic_string();
-  }
-  if (!o.setupPath.empty()) {
-    (void)loadSetup(o.setupPath);  // a bad setup stops here, not at the first run
-    c.setupText = readText(o.setupPath);
-    c.setupName = fs::path(o.setupPath).filename().string();
-    c.setupDir = fs::canonical(o.setupPath).parent_path().string();
-  }
-  std::error_code ec;
-  c.workerExe = fs::read_symlink("/proc/self/exe", ec).string();
-  if (ec) throw std::runtime_error("cannot find the ncvm binary for the workers");
-  std::signal(SIGPIPE, SIG_IGN);  // a worker that dies must not take the server with it
-
-  server::WebServer web(std::move(c));
-  int port = web.bind();
-  std::string host = o.bind.find(':') != std::string::npos ? "[" + o.bind + "]" : o.bind;
-  fmt::print("ncvm serve: http://{}:{}/\n", host, port);
-  if (web.config().webDir.empty())
-    fmt::print(stderr, "ncvm: warning: the front end was not built (web/README.md): only the API is served\n");
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("cannot find the ncvm binary");
+  const std::string server = (exe.parent_path() / "ncvm-serve").string();
+  std::vector<char*> args;
+  args.push_back(const_cast<char*>(server.c_str()));
+  int first = 1;
+  while (first < argc && std::string_view(argv[first]) != "serve") ++first;
+  for (int k = first + 1; k < argc; ++k) args.push_back(argv[k]);  // what follows "serve"
+  args.push_back(nullptr);
   std::fflush(stdout);
-  web.listen();
-  return kExitOk;
+  ::execv(server.c_str(), args.data());
+  throw std::runtime_error(fmt::format("cannot start {}: {}", server, std::strerror(errno)));
 }
 
 }  // namespace
@@ -507,16 +440,8 @@ int main(int argc, char** argv) {
   addSetupOptions(compare, compareOpts);
   compare->add_flag("--json", compareJsonOut, "print the comparison as JSON");
   ServeOptions serveOpts;
-  auto* serve = app.add_subcommand("serve", "serve the web viewer (editor, 3D toolpath, timeline) on this machine");
-  serve->add_option("PROGRAM", serveOpts.program, "program to open in the page");
-  serve->add_option("--port", serveOpts.port, "TCP port (0: any free port)")->capture_default_str();
-  serve->add_option("--bind", serveOpts.bind, "address to listen on (another than 127.0.0.1 only when you mean it)")
-      ->capture_default_str();
-  serve->add_option("--setup", serveOpts.setupPath, "default setup for programs that have none (TOML)");
-  serve->add_option("--root", serveOpts.roots, "folder of programs the page may open (repeatable)");
-  serve->add_option("--timeout", serveOpts.timeoutSeconds, "wall-clock limit of one run, seconds")->capture_default_str();
-  serve->add_option("--max-blocks", serveOpts.maxBlocks, "most blocks one run may execute")->capture_default_str();
-  serve->add_option("--threads", serveOpts.threads, "requests served at once")->capture_default_str();
+  auto* serve = app.add_subcommand("serve", kServeDescription);
+  addServeOptions(serve, serveOpts);
   uint64_t workerMemory = 0;
   auto* worker = app.add_subcommand("serve-worker", "");  // internal: one run for `ncvm serve`
   worker->group("");
@@ -541,7 +466,7 @@ int main(int argc, char** argv) {
     if (check->parsed()) return checkCommand(checkOpts, json);
     if (sweep->parsed()) return sweepCommand(sweepOpts, varies, sweepOut, sweepCsvOut);
     if (compare->parsed()) return compareCommand(compareOpts, programA, programB, compareJsonOut);
-    if (serve->parsed()) return serveCommand(serveOpts);
+    if (serve->parsed()) return startServer(argc, argv);
     if (worker->parsed()) return server::workerMain(workerMemory);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `ncvm serve` as a command: it listens on 127.0.0.1 unless told otherwise, prints its URL,
 # opens PROGRAM, refuses a port in use (exit 2), a missing --root and a bad --setup; and its
-# worker answers a malformed request with an error, not a crash.
+# worker answers a malformed request with an error, not a crash; the server is ncvm-serve.
 set -u
 ncvm=$1
 dir=$2
@@ -44,4 +44,10 @@ answer=$(printf '{not json' | "$ncvm" serve-worker) || fail "worker exit $? on a
 echo "$answer" | grep -q '"ok":false' || fail "worker answer: $answer"
 answer=$(printf '{"program":"O1\\nG00 X1.\\nM30\\n"}' | "$ncvm" serve-worker) || fail "worker exit $?"
 echo "$answer" | grep -q '"ok":true' || fail "worker answer: $answer"
+# The HTTP server is ncvm-serve, beside ncvm: ncvm itself does not load the HTTP library
+# (nor OpenSSL), which would cost every other command's start-up.
+[ -x "$(dirname "$ncvm")/ncvm-serve" ] || fail "no ncvm-serve beside $ncvm"
+if command -v readelf >/dev/null; then
+  readelf -d "$ncvm" | grep -E 'NEEDED.*(httplib|libssl|libcrypto)' && fail "ncvm loads the HTTP library"
+fi
 echo "serve: ok"
