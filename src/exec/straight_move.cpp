@@ -379,6 +379,7 @@ bool Executor::straightBlock(const StraightWords& w) {
   MoveEvent& e = straight_;
   if constexpr (Arc) {
     double cu0 = 0, cv0 = 0;
+    double radius = -1;  // the start radius, once computed (the same hypot, the same double)
     // arcCenter in G17 (u = X, v = Y): R and I with X's increments, J with Y's.
     const bool cw = motion == 20;
     const double su = static_cast<double>(start[0]), sv = static_cast<double>(start[1]);
@@ -406,7 +407,8 @@ bool Executor::straightBlock(const StraightWords& w) {
     } else {
       cu0 = su + (wi.given ? static_cast<double>(lengthNmOf(wi, 0)) : 0.0);
       cv0 = sv + (wj.given ? static_cast<double>(lengthNmOf(wj, 1)) : 0.0);
-      const double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
+      const double rs = radius = std::hypot(su - cu0, sv - cv0);
+      const double re = std::hypot(eu - cu0, ev - cv0);
       if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
       if (std::fabs(re - rs) > tolNm)
         throw AlarmError(AlarmId::OverToleranceOfRadius,
@@ -414,7 +416,7 @@ bool Executor::straightBlock(const StraightWords& w) {
     }
     // arcWithCenter: the feed first, then the sweep and the length.
     e.feed = effectiveFeed();
-    const double r = std::hypot(su - cu0, sv - cv0);
+    const double r = radius >= 0 ? radius : std::hypot(su - cu0, sv - cv0);
     const double as = std::atan2(sv - cv0, su - cu0), ae = std::atan2(ev - cv0, eu - cu0);
     double sweep = cw ? as - ae : ae - as;
     const bool full = (eu == su && ev == sv);
