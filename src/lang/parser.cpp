@@ -13,6 +13,7 @@
 #include "lang/decimal_scan.hpp"
 #include "lang/fast_block.hpp"
 #include "lang/huge_pages.hpp"
+#include "lang/line_chunks.hpp"
 
 namespace ncvm {
 namespace {
@@ -49,14 +50,15 @@ constexpr FnName kFunctions[] = {
 
 class Compiler {
  public:
-  Compiler(std::string_view text, uint32_t file, std::string_view stem, const ParseOptions& opt)
-      : s_(text), file_(file), stem_(stem), opt_(opt) {}
+  Compiler(LineChunks& chunks, uint32_t file, std::string_view stem, const ParseOptions& opt)
+      : chunks_(chunks), file_(file), stem_(stem), opt_(opt) {}
 
   ParsedFile run();
 
  private:
   // ---- text position -------------------------------------------------------------------
-  std::string_view s_;
+  LineChunks& chunks_;
+  std::string_view s_;  // the piece of whole lines being compiled; positions index it
   uint32_t file_;
   std::string_view stem_;
   ParseOptions opt_;
@@ -73,6 +75,10 @@ class Compiler {
   uint16_t ncWords_ = 0;
   bool sawHeaderComment_ = false;
   bool hasControlFlow_ = false;  // the open program has a WHILE, END, GOTO or IF block
+  // Tape format: the text before the first '%' is leader, skipped when the text has a '%' at
+  // all. Until one is found, what was compiled may yet be leader.
+  bool sawPercent_ = false;
+  bool leaderLine_ = false;  // the next line starts with the first '%'; lineStart_ is set
 
   uint32_t col() const { return static_cast<uint32_t>(i_ - lineStart_ + 1); }
   char peek(size_t k = 0) const { return i_ + k < end_ ? s_[i_ + k] : '\0'; }
@@ -104,7 +110,7 @@ class Compiler {
     if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
-      const size_t lines = 1 + countNewlines(s_);
+      const size_t lines = chunks_.lineHint();
       prog_->blocks.reserve(lines);
       prog_->words.reserve(lines * 3);
       adviseHugePages(prog_->blocks.data(), prog_->blocks.capacity() * sizeof(Block));
@@ -115,6 +121,7 @@ class Compiler {
     prog_->loc = loc;
     sawHeaderComment_ = false;
   }
+  void compilePiece();
   void parseLine(size_t b, size_t e);
   void parseBlock(size_t b, size_t e);
   bool parseHeader();
@@ -160,20 +167,31 @@ class Compiler {
 };
 
 ParsedFile Compiler::run() {
-  // Tape format: text before the first '%' is leader and is skipped when the file has a
-  // '%' at all; '%' characters themselves are separators, so "%O1200(TITLE)" works.
-  size_t firstPercent = s_.find('%');
+  for (s_ = chunks_.next(); !s_.empty(); s_ = chunks_.next()) compilePiece();
+  finishProgram();
+  return std::move(out_);
+}
+
+void Compiler::compilePiece() {
   size_t pos = 0;
-  if (firstPercent != std::string_view::npos) {
-    // Leader: count the lines we skip so line numbers stay right.
-    for (size_t k = 0; k < firstPercent; ++k)
-      if (s_[k] == '\n') ++line_;
-    pos = firstPercent;
-    lineStart_ = s_.rfind('\n', firstPercent) == std::string_view::npos
-                     ? 0
-                     : s_.rfind('\n', firstPercent) + 1;
+  // '%' characters are separators, so "%O1200(TITLE)" works; the first one ends the leader.
+  if (!sawPercent_) {
+    const size_t percent = s_.find('%');
+    if (percent != std::string_view::npos) {
+      sawPercent_ = true;
+      // All before it was leader: what an earlier piece compiled of it goes. Its lines count,
+      // so line numbers stay right.
+      out_ = ParsedFile{};
+      prog_ = nullptr;
+      hasControlFlow_ = false;
+      sawHeaderComment_ = false;
+      line_ += static_cast<uint32_t>(countNewlines(s_.substr(0, percent)));
+      const size_t nl = s_.rfind('\n', percent);
+      lineStart_ = nl == std::string_view::npos ? 0 : nl + 1;
+      pos = percent;
+      leaderLine_ = true;
+    }
   }
-  bool firstLine = true;
   const char* const text = s_.data();
   // Once a program is open, a plain line (nearly every line of a CAM program) is compiled in
   // one pass, if a '\n' ends it (the scan stops there); the first line after a leader starts
@@ -186,20 +204,17 @@ ParsedFile Compiler::run() {
     if (prog_ && pos < fastBefore) {
       if (const char* e = compileFastLine(text + pos, file_, line_, opt_.maxLineLength, *prog_)) {
         ++out_.fastLines;
-        firstLine = false;
         pos = static_cast<size_t>(e - text) + 1;
         continue;
       }
     }
     size_t nl = s_.find('\n', pos);
     size_t e = nl == std::string_view::npos ? s_.size() : nl;
-    if (!firstLine || firstPercent == std::string_view::npos) lineStart_ = pos;
-    firstLine = false;
+    if (!leaderLine_) lineStart_ = pos;
+    leaderLine_ = false;
     parseLine(pos, e);
     pos = e + 1;
   }
-  finishProgram();
-  return std::move(out_);
 }
 
 void Compiler::parseLine(size_t b, size_t e) {
@@ -1017,7 +1032,13 @@ Type Compiler::parsePrimary() {
 
 ParsedFile parseProgramText(std::string_view text, uint32_t fileId, std::string_view stem,
                             const ParseOptions& options) {
-  return Compiler(text, fileId, stem, options).run();
+  TextChunks chunks(text);
+  return Compiler(chunks, fileId, stem, options).run();
+}
+
+ParsedFile parseProgramChunks(LineChunks& chunks, uint32_t fileId, std::string_view stem,
+                              const ParseOptions& options) {
+  return Compiler(chunks, fileId, stem, options).run();
 }
 
 void resolveStructure(Program& p) {
