@@ -200,14 +200,13 @@ void Compiler::compilePiece() {
   const size_t fastBefore =
       !opt_.fastLines || lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
   while (pos < s_.size()) {
-    ++line_;
     if (prog_ && pos < fastBefore) {
-      if (const char* e = compileFastLine(text + pos, file_, line_, opt_.maxLineLength, *prog_)) {
-        ++out_.fastLines;
-        pos = static_cast<size_t>(e - text) + 1;
-        continue;
-      }
+      pos = static_cast<size_t>(compileFastLines(text + pos, text + fastBefore, file_, line_,
+                                                 opt_.maxLineLength, *prog_, out_.fastLines) -
+                                text);
+      if (pos >= s_.size()) break;
     }
+    ++line_;
     size_t nl = s_.find('\n', pos);
     size_t e = nl == std::string_view::npos ? s_.size() : nl;
     if (!leaderLine_) lineStart_ = pos;
