@@ -98,7 +98,7 @@ class Compiler {
     return *prog_;
   }
   // Loops and literal GOTOs are resolved once a program is complete; a program without any
-  // (a CAM program) has nothing to resolve: every block's loopParent stays -1.
+  // (a CAM program) has nothing to resolve: no block has a loop parent (loopParents empty).
   void finishProgram() {
     if (prog_ && hasControlFlow_) resolveStructure(*prog_);
     hasControlFlow_ = false;
@@ -1048,9 +1048,10 @@ void resolveStructure(Program& p) {
   };
   // DO/END pairing: ids 1..3, properly nested, not crossing.
   std::vector<uint32_t> open;  // While block indices
+  p.loopParents.assign(p.blocks.size(), -1);
   for (uint32_t k = 0; k < p.blocks.size(); ++k) {
     Block& b = p.blocks[k];
-    b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
+    p.loopParents[k] = open.empty() ? -1 : static_cast<int32_t>(open.back());
     if (b.kind == BlockKind::While) {
       if (b.loopId < 1 || b.loopId > 3) {
         structural(b, AlarmId::IllegalLoopNumber, "DO " + std::to_string(b.loopId));
@@ -1075,7 +1076,7 @@ void resolveStructure(Program& p) {
       }
       uint32_t w = open.back();
       open.pop_back();
-      b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
+      p.loopParents[k] = open.empty() ? -1 : static_cast<int32_t>(open.back());
       p.ops(b).target = static_cast<int32_t>(w);
       p.ops(p.blocks[w]).target = static_cast<int32_t>(k + 1);
     }
@@ -1095,9 +1096,9 @@ void resolveStructure(Program& p) {
     }
     o.target = t;
     // The target's enclosing loops must all enclose the GOTO too.
-    for (int32_t l = p.blocks[t].loopParent; l >= 0; l = p.blocks[l].loopParent) {
+    for (int32_t l = p.loopParents[t]; l >= 0; l = p.loopParents[l]) {
       bool enclosesSource = false;
-      for (int32_t s = b.loopParent; s >= 0; s = p.blocks[s].loopParent)
+      for (int32_t s = p.loopParents[k]; s >= 0; s = p.loopParents[s])
         if (s == l) enclosesSource = true;
       if (static_cast<uint32_t>(t) == static_cast<uint32_t>(l)) break;  // jumping to the WHILE itself
       if (!enclosesSource) {

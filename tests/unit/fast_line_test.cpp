@@ -234,10 +234,12 @@ TEST(FastLines, TakesPlainLinesAndRefusesOthers) {
 }
 
 TEST(FastLines, ControlFlowStillResolved) {
-  // A program with loops is resolved; one without keeps loopParent -1 (nothing to resolve).
+  // A program with loops is resolved; one without has no loop parents (nothing to resolve).
   ParsedFile f = parseProgramText("O1\nWHILE[#1LT2]DO1\nX1.\nEND1\nX2.\nO2\nX1.\nEND1\n", 0, "t");
   ASSERT_EQ(f.programs.size(), 2u);
-  EXPECT_EQ(f.programs[0].blocks[1].loopParent, 0);
+  EXPECT_EQ(f.programs[0].loopParent(1), 0);
+  EXPECT_EQ(f.programs[0].loopParent(0), -1);
+  EXPECT_TRUE(parseProgramText("O1\nX1.\nX2.\n", 0, "t").programs[0].loopParents.empty());
   EXPECT_EQ(f.programs[0].macroOps[0].target, 3);
   ASSERT_EQ(f.programs[1].structural.size(), 1u);  // END without DO
 }

@@ -53,7 +53,7 @@ inline void expectSamePrograms(const Program& a, const Program& b, const std::st
     expectSameLoc(x.loc, y.loc, what);
     EXPECT_EQ(x.n, y.n) << what;
     EXPECT_EQ(x.comment, y.comment) << what;
-    EXPECT_EQ(x.loopParent, y.loopParent) << what;
+    EXPECT_EQ(a.loopParent(k), b.loopParent(k)) << what;
     EXPECT_EQ(x.ops, y.ops) << what;
   }
   ASSERT_EQ(a.words.size(), b.words.size());
@@ -112,6 +112,7 @@ inline void expectSamePrograms(const Program& a, const Program& b, const std::st
   expectSameAlarms(a.structural, b.structural, "structural");
   EXPECT_EQ(a.lostLoops, b.lostLoops);
   EXPECT_EQ(a.labels, b.labels);
+  EXPECT_EQ(a.loopParents, b.loopParents);
 }
 
 }  // namespace ncvm::test
