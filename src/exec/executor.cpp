@@ -207,10 +207,11 @@ void Executor::jumpTo(int32_t label, bool computed) {
     t = f.prog->findLabel(label, f.pc);
     if (t < 0) throw AlarmError(AlarmId::IllegalMacroSequence, "N" + std::to_string(label) + " not found");
     // A jump into a loop the GOTO is not inside is illegal.
-    for (int32_t l = f.prog->blocks[static_cast<size_t>(t)].loopParent; l >= 0;
-         l = f.prog->blocks[static_cast<size_t>(l)].loopParent) {
+    // (block_ is blocks[f.pc]: the GOTO's own block.)
+    for (int32_t l = f.prog->loopParent(static_cast<size_t>(t)); l >= 0;
+         l = f.prog->loopParent(static_cast<size_t>(l))) {
       bool inside = false;
-      for (int32_t s = b.loopParent; s >= 0; s = f.prog->blocks[static_cast<size_t>(s)].loopParent)
+      for (int32_t s = f.prog->loopParent(f.pc); s >= 0; s = f.prog->loopParent(static_cast<size_t>(s)))
         inside |= s == l;
       if (!inside) throw AlarmError(AlarmId::IllegalLoopNumber, "GOTO jumps into a loop");
     }

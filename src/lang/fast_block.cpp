@@ -38,8 +38,13 @@ constexpr std::array<uint8_t, 256> kLetterClass = [] {
 
 }  // namespace
 
-const char* compileFastLine(const char* b, uint32_t file, uint32_t line, uint32_t maxLineLength,
-                            Program& p) {
+namespace {
+
+// One line: the end of the line (its '\n') when it was compiled, nullptr when it is not plain.
+// Inlined into the loop over a run of lines: no call, and no registers saved and restored, per
+// line (about 30 instructions a line).
+[[gnu::always_inline]] inline const char* fastLine(const char* b, uint32_t file, uint32_t line,
+                                                  uint32_t maxLineLength, Program& p) {
   const char* q = b;
   while (isSpace(*q)) ++q;
   if (*q == '\n') return q;  // blank: the general compiler keeps nothing either
@@ -118,6 +123,20 @@ const char* compileFastLine(const char* b, uint32_t file, uint32_t line, uint32_
 refuse:
   p.words.resize(firstWord);
   return nullptr;
+}
+
+}  // namespace
+
+const char* compileFastLines(const char* b, const char* end, uint32_t file, uint32_t& line,
+                             uint32_t maxLineLength, Program& p, uint32_t& compiled) {
+  while (b < end) {
+    const char* e = fastLine(b, file, line + 1, maxLineLength, p);
+    if (!e) break;
+    ++line;
+    ++compiled;
+    b = e + 1;
+  }
+  return b;
 }
 
 }  // namespace ncvm

@@ -8,18 +8,21 @@
 
 namespace ncvm {
 
-// Compiles the line that starts at `b` (the text ends at `textEnd`) into `p`, if it is a plain
-// line: spaces, an optional N number, and address words made of an upper-case letter and a
-// literal number the general compiler accepts without an alarm (no O/N inside, no sign on G,
-// M, S..., no point on M, S, T..., at most 19 digits). A blank line is plain too (it compiles
-// to nothing). The result is exactly the general compiler's: the same Block (location, N,
-// kind, flags), Words (values bit for bit, flags, columns) and label.
+// Compiles the plain lines from `b` on into `p`, one after another, while each is plain and
+// starts before `end`; each of them must end in a '\n' at or before `end` (a last line without
+// one goes the general way): the scan stops at it, so it tests no bounds. One call takes a run
+// of plain lines, the bulk of a CAM program.
 //
-// Returns the end of the line (its '\n') when the line was compiled; nullptr when it is not
-// plain, having written nothing: the caller then compiles it the general way. The line must
-// end in a '\n' (a last line without one goes the general way): the scan stops at it, so it
-// tests no bounds.
-const char* compileFastLine(const char* b, uint32_t file, uint32_t line, uint32_t maxLineLength,
-                            Program& p);
+// A plain line: spaces, an optional N number, and address words made of an upper-case letter
+// and a literal number the general compiler accepts without an alarm (no O/N inside, no sign
+// on G, M, S..., no point on M, S, T..., at most 19 digits). A blank line is plain too (it
+// compiles to nothing). The result is exactly the general compiler's: the same Block
+// (location, N, kind, flags), Words (values bit for bit, flags, columns) and label.
+//
+// `line` is the number of the line before `b`; it and `compiled` count the lines compiled.
+// Returns the start of the first line not compiled (not plain, having written nothing: the
+// caller compiles it the general way), or `end`.
+const char* compileFastLines(const char* b, const char* end, uint32_t file, uint32_t& line,
+                             uint32_t maxLineLength, Program& p, uint32_t& compiled);
 
 }  // namespace ncvm

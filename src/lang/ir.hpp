@@ -129,9 +129,10 @@ struct Block {
   SourceLoc loc;           // start of the block
   int32_t n = -1;          // sequence number, -1 = none
   int32_t comment = -1;    // index into Program::strings of the block's first comment
-  int32_t loopParent = -1; // index of the innermost enclosing While block
   int32_t ops = -1;        // index into Program::macroOps; -1 for NC and empty blocks
 };
+// 36 bytes: a 1,000,000-line CAM program holds 1,000,000 blocks (the enclosing loop of each,
+// which only programs with loops or GOTOs need, is Program::loopParents).
 
 struct Program {
   int32_t number = -1;    // O number; -1 for a file without O header
@@ -153,6 +154,10 @@ struct Program {
   std::vector<int32_t> lostLoops;
   // Sequence numbers in program order: (N, block index).
   std::vector<std::pair<int32_t, uint32_t>> labels;
+  // Per block, the index of the innermost enclosing While block (-1: none). Filled by
+  // resolveStructure, which runs only for a program with a WHILE, END, GOTO or IF block;
+  // empty otherwise, when no block has one.
+  std::vector<int32_t> loopParents;
 
   std::string displayName() const;
   // A block's macro operands; all -1 for a block that has none.
@@ -161,6 +166,8 @@ struct Program {
     return b.ops >= 0 ? macroOps[static_cast<size_t>(b.ops)] : none;
   }
   MacroOps& ops(Block& b) { return macroOps[static_cast<size_t>(b.ops)]; }
+  // The innermost While block around block k, -1 if none.
+  int32_t loopParent(size_t k) const { return loopParents.empty() ? -1 : loopParents[k]; }
   // Block index of the first block with sequence number n at or after `from`, then from the
   // start (the control's search order); -1 if none.
   int32_t findLabel(int32_t n, uint32_t from = 0) const;

@@ -13,6 +13,7 @@
 #include "lang/decimal_scan.hpp"
 #include "lang/fast_block.hpp"
 #include "lang/huge_pages.hpp"
+#include "lang/line_chunks.hpp"
 
 namespace ncvm {
 namespace {
@@ -49,14 +50,15 @@ constexpr FnName kFunctions[] = {
 
 class Compiler {
  public:
-  Compiler(std::string_view text, uint32_t file, std::string_view stem, const ParseOptions& opt)
-      : s_(text), file_(file), stem_(stem), opt_(opt) {}
+  Compiler(LineChunks& chunks, uint32_t file, std::string_view stem, const ParseOptions& opt)
+      : chunks_(chunks), file_(file), stem_(stem), opt_(opt) {}
 
   ParsedFile run();
 
  private:
   // ---- text position -------------------------------------------------------------------
-  std::string_view s_;
+  LineChunks& chunks_;
+  std::string_view s_;  // the piece of whole lines being compiled; positions index it
   uint32_t file_;
   std::string_view stem_;
   ParseOptions opt_;
@@ -73,6 +75,10 @@ class Compiler {
   uint16_t ncWords_ = 0;
   bool sawHeaderComment_ = false;
   bool hasControlFlow_ = false;  // the open program has a WHILE, END, GOTO or IF block
+  // Tape format: the text before the first '%' is leader, skipped when the text has a '%' at
+  // all. Until one is found, what was compiled may yet be leader.
+  bool sawPercent_ = false;
+  bool leaderLine_ = false;  // the next line starts with the first '%'; lineStart_ is set
 
   uint32_t col() const { return static_cast<uint32_t>(i_ - lineStart_ + 1); }
   char peek(size_t k = 0) const { return i_ + k < end_ ? s_[i_ + k] : '\0'; }
@@ -92,7 +98,7 @@ class Compiler {
     return *prog_;
   }
   // Loops and literal GOTOs are resolved once a program is complete; a program without any
-  // (a CAM program) has nothing to resolve: every block's loopParent stays -1.
+  // (a CAM program) has nothing to resolve: no block has a loop parent (loopParents empty).
   void finishProgram() {
     if (prog_ && hasControlFlow_) resolveStructure(*prog_);
     hasControlFlow_ = false;
@@ -104,7 +110,7 @@ class Compiler {
     if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
-      const size_t lines = 1 + countNewlines(s_);
+      const size_t lines = chunks_.lineHint();
       prog_->blocks.reserve(lines);
       prog_->words.reserve(lines * 3);
       adviseHugePages(prog_->blocks.data(), prog_->blocks.capacity() * sizeof(Block));
@@ -115,6 +121,7 @@ class Compiler {
     prog_->loc = loc;
     sawHeaderComment_ = false;
   }
+  void compilePiece();
   void parseLine(size_t b, size_t e);
   void parseBlock(size_t b, size_t e);
   bool parseHeader();
@@ -160,20 +167,31 @@ class Compiler {
 };
 
 ParsedFile Compiler::run() {
-  // Tape format: text before the first '%' is leader and is skipped when the file has a
-  // '%' at all; '%' characters themselves are separators, so "%O1200(TITLE)" works.
-  size_t firstPercent = s_.find('%');
+  for (s_ = chunks_.next(); !s_.empty(); s_ = chunks_.next()) compilePiece();
+  finishProgram();
+  return std::move(out_);
+}
+
+void Compiler::compilePiece() {
   size_t pos = 0;
-  if (firstPercent != std::string_view::npos) {
-    // Leader: count the lines we skip so line numbers stay right.
-    for (size_t k = 0; k < firstPercent; ++k)
-      if (s_[k] == '\n') ++line_;
-    pos = firstPercent;
-    lineStart_ = s_.rfind('\n', firstPercent) == std::string_view::npos
-                     ? 0
-                     : s_.rfind('\n', firstPercent) + 1;
+  // '%' characters are separators, so "%O1200(TITLE)" works; the first one ends the leader.
+  if (!sawPercent_) {
+    const size_t percent = s_.find('%');
+    if (percent != std::string_view::npos) {
+      sawPercent_ = true;
+      // All before it was leader: what an earlier piece compiled of it goes. Its lines count,
+      // so line numbers stay right.
+      out_ = ParsedFile{};
+      prog_ = nullptr;
+      hasControlFlow_ = false;
+      sawHeaderComment_ = false;
+      line_ += static_cast<uint32_t>(countNewlines(s_.substr(0, percent)));
+      const size_t nl = s_.rfind('\n', percent);
+      lineStart_ = nl == std::string_view::npos ? 0 : nl + 1;
+      pos = percent;
+      leaderLine_ = true;
+    }
   }
-  bool firstLine = true;
   const char* const text = s_.data();
   // Once a program is open, a plain line (nearly every line of a CAM program) is compiled in
   // one pass, if a '\n' ends it (the scan stops there); the first line after a leader starts
@@ -182,24 +200,20 @@ ParsedFile Compiler::run() {
   const size_t fastBefore =
       !opt_.fastLines || lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
   while (pos < s_.size()) {
-    ++line_;
     if (prog_ && pos < fastBefore) {
-      if (const char* e = compileFastLine(text + pos, file_, line_, opt_.maxLineLength, *prog_)) {
-        ++out_.fastLines;
-        firstLine = false;
-        pos = static_cast<size_t>(e - text) + 1;
-        continue;
-      }
+      pos = static_cast<size_t>(compileFastLines(text + pos, text + fastBefore, file_, line_,
+                                                 opt_.maxLineLength, *prog_, out_.fastLines) -
+                                text);
+      if (pos >= s_.size()) break;
     }
+    ++line_;
     size_t nl = s_.find('\n', pos);
     size_t e = nl == std::string_view::npos ? s_.size() : nl;
-    if (!firstLine || firstPercent == std::string_view::npos) lineStart_ = pos;
-    firstLine = false;
+    if (!leaderLine_) lineStart_ = pos;
+    leaderLine_ = false;
     parseLine(pos, e);
     pos = e + 1;
   }
-  finishProgram();
-  return std::move(out_);
 }
 
 void Compiler::parseLine(size_t b, size_t e) {
@@ -1017,7 +1031,13 @@ Type Compiler::parsePrimary() {
 
 ParsedFile parseProgramText(std::string_view text, uint32_t fileId, std::string_view stem,
                             const ParseOptions& options) {
-  return Compiler(text, fileId, stem, options).run();
+  TextChunks chunks(text);
+  return Compiler(chunks, fileId, stem, options).run();
+}
+
+ParsedFile parseProgramChunks(LineChunks& chunks, uint32_t fileId, std::string_view stem,
+                              const ParseOptions& options) {
+  return Compiler(chunks, fileId, stem, options).run();
 }
 
 void resolveStructure(Program& p) {
@@ -1028,9 +1048,10 @@ void resolveStructure(Program& p) {
   };
   // DO/END pairing: ids 1..3, properly nested, not crossing.
   std::vector<uint32_t> open;  // While block indices
+  p.loopParents.assign(p.blocks.size(), -1);
   for (uint32_t k = 0; k < p.blocks.size(); ++k) {
     Block& b = p.blocks[k];
-    b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
+    p.loopParents[k] = open.empty() ? -1 : static_cast<int32_t>(open.back());
     if (b.kind == BlockKind::While) {
       if (b.loopId < 1 || b.loopId > 3) {
         structural(b, AlarmId::IllegalLoopNumber, "DO " + std::to_string(b.loopId));
@@ -1055,7 +1076,7 @@ void resolveStructure(Program& p) {
       }
       uint32_t w = open.back();
       open.pop_back();
-      b.loopParent = open.empty() ? -1 : static_cast<int32_t>(open.back());
+      p.loopParents[k] = open.empty() ? -1 : static_cast<int32_t>(open.back());
       p.ops(b).target = static_cast<int32_t>(w);
       p.ops(p.blocks[w]).target = static_cast<int32_t>(k + 1);
     }
@@ -1075,9 +1096,9 @@ void resolveStructure(Program& p) {
     }
     o.target = t;
     // The target's enclosing loops must all enclose the GOTO too.
-    for (int32_t l = p.blocks[t].loopParent; l >= 0; l = p.blocks[l].loopParent) {
+    for (int32_t l = p.loopParents[t]; l >= 0; l = p.loopParents[l]) {
       bool enclosesSource = false;
-      for (int32_t s = b.loopParent; s >= 0; s = p.blocks[s].loopParent)
+      for (int32_t s = p.loopParents[k]; s >= 0; s = p.loopParents[s])
         if (s == l) enclosesSource = true;
       if (static_cast<uint32_t>(t) == static_cast<uint32_t>(l)) break;  // jumping to the WHILE itself
       if (!enclosesSource) {

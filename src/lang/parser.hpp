@@ -29,6 +29,12 @@ struct ParsedFile {
 ParsedFile parseProgramText(std::string_view text, uint32_t fileId, std::string_view stem,
                             const ParseOptions& options = {});
 
+// The same for text given in pieces of whole lines (a file read through a reused buffer):
+// the result is parseProgramText's on the whole text.
+class LineChunks;
+ParsedFile parseProgramChunks(LineChunks& chunks, uint32_t fileId, std::string_view stem,
+                              const ParseOptions& options = {});
+
 // Resolves WHILE/DO/END pairs and literal GOTO targets; fills Program::structural.
 void resolveStructure(Program& program);
 

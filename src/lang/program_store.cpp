@@ -5,18 +5,22 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <sstream>
 #include <stdexcept>
 
-#include "lang/huge_pages.hpp"
+#include "lang/line_chunks.hpp"
 
 namespace ncvm {
 
 std::vector<const Program*> ProgramStore::addText(std::string_view text, const std::string& name) {
+  TextChunks chunks(text);
+  return addChunks(chunks, name);
+}
+
+std::vector<const Program*> ProgramStore::addChunks(LineChunks& chunks, const std::string& name) {
   uint32_t id = files_.add(name);
   std::string stem = std::filesystem::path(name).stem().string();
-  ParsedFile parsed = parseProgramText(text, id, stem, options_);
+  ParsedFile parsed = parseProgramChunks(chunks, id, stem, options_);
   std::vector<const Program*> added;
   for (auto& p : parsed.programs) {
     p.label = p.displayName();
@@ -46,14 +50,11 @@ std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
   if (size > maxFileBytes_) return addTooLarge(path, size);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("{}: cannot open", path));
-  // Read into memory that is not zero-filled first (a std::string of `size` would be): a
-  // large CAM file is written once, by the read. Not mmap: a file truncated while it is
-  // compiled must not kill the process with SIGBUS. A file that shrank since file_size is
-  // compiled as far as it was read.
-  auto text = std::make_unique_for_overwrite<char[]>(size ? size : 1);
-  adviseHugePages(text.get(), size);
-  in.read(text.get(), static_cast<std::streamsize>(size));
-  return addText(std::string_view(text.get(), static_cast<size_t>(in.gcount())), path);
+  // Compiled as it is read, through one reused buffer (line_chunks.hpp): the text is never
+  // held whole. Not mmap: a file truncated while it is compiled must not kill the process
+  // with SIGBUS. A file that shrank since file_size is compiled as far as it was read.
+  StreamChunks chunks(in, size);
+  return addChunks(chunks, path);
 }
 
 // A file over limits.max_file_bytes is not read: like a control whose memory is full, it

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/source.hpp"
+#include "lang/line_chunks.hpp"
 #include "lang/parser.hpp"
 
 namespace ncvm {
@@ -36,6 +37,7 @@ class ProgramStore {
   SourceFiles& files() { return files_; }
 
  private:
+  std::vector<const Program*> addChunks(LineChunks& chunks, const std::string& name);
   std::vector<const Program*> addTooLarge(const std::string& path, uintmax_t size);
 
   SourceFiles& files_;

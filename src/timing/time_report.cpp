@@ -68,8 +68,16 @@ void TimeReport::growLines(const EventOrigin& at) {
   if (t.count.empty() && at.file < lineCounts_.size() && lineCounts_[at.file] >= at.line)
     size = lineCounts_[at.file] + size_t{1};
   t.model.resize(size);
-  t.simple.resize(size);
+  if (!t.simple.empty()) t.simple.resize(size);
   t.count.resize(size);
+}
+
+// The first move whose simple time is not its model time splits the two columns: until
+// then every simple sum was its model sum, bit for bit (called before the model column adds
+// this move).
+void TimeReport::addSimple(LineTable& t, uint32_t line, double simple) {
+  if (t.simple.empty()) t.simple = t.model;
+  t.simple[line] += simple;
 }
 
 void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double simple) {
@@ -169,7 +177,7 @@ std::vector<LineTime> TimeReport::topLines(size_t n, const LineOrigin& origin) c
     for (size_t ln = 0; ln < tab.count.size(); ++ln) {
       if (tab.model[ln] < floor || !tab.count[ln]) continue;
       LineTime t{EventOrigin{static_cast<uint32_t>(f), static_cast<uint32_t>(ln), -1, nullptr},
-                 tab.count[ln], TimePair{tab.model[ln], tab.simple[ln]}};
+                 tab.count[ln], TimePair{tab.model[ln], tab.simpleAt(ln)}};
       if (best.size() == n && !before(t, best.back())) continue;
       best.insert(std::upper_bound(best.begin(), best.end(), t, before), t);
       if (best.size() > n) best.pop_back();

@@ -3,6 +3,7 @@
 // blocks between tool changes) and per program line, each with the modelled time and the
 // plain length / feed time beside it; plus the peck-drilling count (pecks and full
 // retracts), so two drilling strategies can be compared.
+#include <bit>
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -100,8 +101,10 @@ class TimeReport {
     if (at.file >= lines_.size() || at.line >= lines_[at.file].count.size()) [[unlikely]]
       growLines(at);
     LineTable& t = lines_[at.file];
+    if (std::bit_cast<uint64_t>(model) != std::bit_cast<uint64_t>(simple) || !t.simple.empty())
+        [[unlikely]]
+      addSimple(t, at.line, simple);
     t.model[at.line] += model;
-    t.simple[at.line] += simple;
     ++t.count[at.line];
   }
   void growLines(const EventOrigin& at);
@@ -112,10 +115,15 @@ class TimeReport {
   int tool_ = 0;
   // Per file, per line (lines are dense: vectors, not a map); file and line are the indexes.
   // All zero until a block of the line runs, so the table grows by a plain memset.
+  // In the simple model (the default) every move's model time is its simple time, bit for
+  // bit, so the sums are too: `simple` stays empty (8 bytes a line fewer to allocate and
+  // clear) until the first time the two differ; it then starts as a copy of `model`.
   struct LineTable {
     std::vector<double> model, simple;
     std::vector<uint32_t> count;
+    double simpleAt(size_t line) const { return simple.empty() ? model[line] : simple[line]; }
   };
+  static void addSimple(LineTable& t, uint32_t line, double simple);
   std::vector<LineTable> lines_;
   std::vector<uint32_t> lineCounts_;
   // Drilling state.

@@ -27,6 +27,7 @@ inline void checkProgram(const Program& p) {
           (p.code[i].arg < 0 || static_cast<size_t>(p.code[i].arg) >= p.consts.size()))
         violated("constant index", k);
   };
+  if (!p.loopParents.empty() && p.loopParents.size() != nb) violated("loop parents size", 0);
   for (size_t k = 0; k < nb; ++k) {
     const Block& b = p.blocks[k];
     if (b.ops >= 0 && static_cast<size_t>(b.ops) >= p.macroOps.size()) violated("macro operands", k);
@@ -52,8 +53,9 @@ inline void checkProgram(const Program& p) {
       violated("error index", k);
     if (b.kind == BlockKind::Assign && o.lhsVar < 0 && o.lhsExpr < 0)
       violated("assignment target", k);
-    if (b.loopParent >= 0 && (static_cast<size_t>(b.loopParent) >= nb ||
-                              p.blocks[static_cast<size_t>(b.loopParent)].kind != BlockKind::While))
+    const int32_t parent = p.loopParent(k);
+    if (parent >= 0 && (static_cast<size_t>(parent) >= nb ||
+                        p.blocks[static_cast<size_t>(parent)].kind != BlockKind::While))
       violated("loop parent", k);
     // Jump targets are only guaranteed when the program has no structural error (the
     // control refuses to run it otherwise).

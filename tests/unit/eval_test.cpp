@@ -56,3 +56,19 @@ TEST(Eval, VacantOnlyDistinguishedByEqNe) {
   EXPECT_DOUBLE_EQ(var("O1\n#100=0\nIF[#1EQ0]GOTO5\n#100=1\nN5M30\n", 100), 1);
   EXPECT_DOUBLE_EQ(var("O1\n#100=0\nIF[#1GE0]GOTO5\n#100=1\nN5M30\n", 100), 0);
 }
+
+// A computed GOTO may not jump into a loop it is not inside (the loop parents are looked up
+// at run time; the compiler checks only literal targets), but may jump within its own loop
+// and out of one.
+TEST(Eval, ComputedGotoIntoALoop) {
+  EXPECT_EQ(alarmOf("O1\n#1=10\nGOTO#1\nWHILE[#2LT2]DO1\nN10 #2=#2+1\nEND1\nM30\n"), "PS0126");
+  EXPECT_EQ(alarmOf("O1\n#1=10\nWHILE[#3LT1]DO1\n#3=1\nGOTO#1\nEND1\nWHILE[#2LT2]DO2\n"
+                    "N10 #2=#2+1\nEND2\nM30\n"),
+            "PS0126");  // from inside one loop into another
+  EXPECT_DOUBLE_EQ(var("O1\nWHILE[#2LT3]DO1\n#2=#2+1\n#1=20\nGOTO#1\n#3=99\nN20 #3=#3+1\nEND1\n"
+                       "M30\n",
+                       3),
+                   3);
+  EXPECT_DOUBLE_EQ(var("O1\nWHILE[#2LT3]DO1\n#2=#2+1\n#1=30\nGOTO#1\nEND1\nN30 #4=7\nM30\n", 4),
+                   7);  // out of the loop
+}

@@ -139,7 +139,7 @@ TEST(Parser, LongNumberFlag) {
   EXPECT_TRUE(w[5].flags & kLongNumber);   // R123456789
   EXPECT_FALSE(w[6].flags & kLongNumber);  // M
   static_assert(sizeof(Word) == 16);       // the IR's memory per word
-  static_assert(sizeof(Block) <= 40);
+  static_assert(sizeof(Block) <= 36);     // and per block
 }
 
 // The compiler marks the blocks the executor's plain-motion path may read directly.

@@ -7,6 +7,7 @@
 
 #include "app/session.hpp"
 #include "timing/profile.hpp"
+#include "timing/time_report.hpp"
 
 using namespace ncvm;
 using namespace ncvm::timing;
@@ -304,4 +305,37 @@ TEST(TimeReport, TopBlocksNameTheirProgramAndN) {
   EXPECT_EQ(top[1]["count"], 1);
   EXPECT_EQ(top[2]["line"], 7);
   EXPECT_TRUE(top[2]["n"].is_null());
+}
+
+// The per-line table stores the simple time only once it differs from the model time (the
+// simple model never does): the line sums must be those of two full columns either way.
+TEST(TimeReport, LineSimpleTimesSplitFromTheModelOnlyWhenTheyDiffer) {
+  TimeReport rep;
+  const EventOrigin l1{0, 1, -1, nullptr}, l2{0, 2, -1, nullptr}, l3{0, 3, -1, nullptr};
+  rep.addLineTime(l1, 0.1, 0.1);
+  rep.addLineTime(l2, 0.3, 0.3);
+  rep.addLineTime(l1, 0.2, 0.2);
+  auto same = rep.topLines(3);
+  ASSERT_EQ(same.size(), 2u);
+  EXPECT_EQ(same[0].time.model, 0.1 + 0.2);
+  EXPECT_EQ(same[0].time.simple, 0.1 + 0.2);
+  EXPECT_EQ(same[1].time.simple, 0.3);
+  rep.addLineTime(l2, 0.5, 0.25);  // the first difference
+  rep.addLineTime(l3, 0.7, 0.7);
+  rep.addLineTime(l1, 0.4, 0.4);
+  rep.addLineTime(EventOrigin{0, 40, -1, nullptr}, 0.05, 0.01);  // past the table: it grows
+  auto split = rep.topLines(4);
+  ASSERT_EQ(split.size(), 4u);
+  EXPECT_EQ(split[0].at.line, 2u);
+  EXPECT_EQ(split[0].time.model, 0.3 + 0.5);
+  EXPECT_EQ(split[0].time.simple, 0.3 + 0.25);
+  EXPECT_EQ(split[1].at.line, 1u);
+  EXPECT_EQ(split[1].time.model, 0.1 + 0.2 + 0.4);
+  EXPECT_EQ(split[1].time.simple, 0.1 + 0.2 + 0.4);
+  EXPECT_EQ(split[1].count, 3u);
+  EXPECT_EQ(split[2].at.line, 3u);
+  EXPECT_EQ(split[2].time.simple, 0.7);
+  EXPECT_EQ(split[3].at.line, 40u);
+  EXPECT_EQ(split[3].time.model, 0.05);
+  EXPECT_EQ(split[3].time.simple, 0.01);
 }
