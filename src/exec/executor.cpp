@@ -231,7 +231,7 @@ static int64_t roundedIndex(double v) {
 EndReason Executor::run(const Program& main) {
   try {
     enter(&main, FrameKind::Main, 1, false);
-    while (straightRun() && step()) {
+    while (step()) {
     }
     if (cornerHold_ || crcCorner_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the program ends after a ,C/,R block");
     crcDrain();  // the end of the program releases whatever compensation still holds
@@ -358,7 +358,12 @@ bool Executor::step() {
       ++f.pc;  // the output "device" is the DPRNT file, always open
       break;
     case BlockKind::Nc:
-      execNc(b);
+      if (straightMove(b)) {
+        // The plain blocks after a straight move run in straightRun's loop.
+        if (simTime_ > setup_.limits.maxTimeSeconds) timeLimitAlarm();
+        return straightRun();
+      }
+      execNcGeneral(b);
       break;
   }
   if (simTime_ > setup_.limits.maxTimeSeconds) timeLimitAlarm();

@@ -199,9 +199,10 @@ class Executor {
   // executor.cpp
   void enter(const Program* p, FrameKind kind, int repeats, bool codeCalled);
   bool step();  // one block; false when the run ends
-  // step() for the plain blocks from the current one on, as long as the straight path takes
-  // them (the same bookkeeping per block, the modal state checked once); a plain block it
-  // refuses runs the general way and ends the run. False when the program ended.
+  // step() for the plain blocks after a straight move, as long as the straight path takes
+  // them: the same bookkeeping per block, no second modal test (a straight block changes
+  // nothing it reads). A plain block it refuses runs the general way and ends the run; so does
+  // any other block (step() runs it). False when the program ended.
   bool straightRun();
   [[noreturn]] void blockLimitAlarm() const;
   [[noreturn]] void timeLimitAlarm() const;
@@ -231,8 +232,8 @@ class Executor {
   int axisByNumber(int n) const;  // 1-based controlled axis -> slot, -1 if none
 
   // nc_block.cpp
-  void execNc(const Block& b);
-  void execNcGeneral(const Block& b);  // execNc without the straight path
+  // An NC block the straight path (straightMove) did not take.
+  void execNcGeneral(const Block& b);
   bool plainMotion(Words& w);  // execNc's fast path for plain G00-G03 blocks
   void gatherWords(const Block& b, Words& w);
   void gatherPlainWords(const Block& b, Words& w) const;  // a kPlainBlock block's words

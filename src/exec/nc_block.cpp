@@ -266,11 +266,6 @@ bool Executor::plainMotion(Words& w) {
   return true;
 }
 
-void Executor::execNc(const Block& b) {
-  if (straightMove(b)) return;  // plain blocks, and those that are with their variables read
-  execNcGeneral(b);
-}
-
 void Executor::execNcGeneral(const Block& b) {
   Words w;
   if (b.flags & kPlainBlock) {

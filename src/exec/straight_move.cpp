@@ -94,11 +94,9 @@ bool straightPathEnabled = true;
 thread_local uint64_t straightPathMoves = 0;
 
 bool Executor::straightRun() {
-  if (!straightPathEnabled) return true;
   Frame& f = frames_.back();  // a straight block pushes no frame: the reference stays valid
   const Program& prog = *f.prog;
   const size_t n = prog.blocks.size();
-  bool checked = false;
   while (f.pc < n) {
     const Block& b = prog.blocks[f.pc];
     // A block skip level (step() decides it) or any other block: step() runs it.
@@ -112,10 +110,10 @@ bool Executor::straightRun() {
     origin_.line = b.loc.line;
     origin_.n = b.n;
     origin_.programName = &prog.label;
-    // After a straight block there is no compensation and nothing held (its modal test).
-    deferring_ = checked ? false : crcBusy();
-    if (straightMove(b, checked)) {
-      checked = true;
+    // The block before was a straight move: no compensation, nothing held (crcBusy() is false)
+    // and the modal state still passes straightMove's test.
+    deferring_ = false;
+    if (straightMove(b, true)) {
       if (simTime_ > setup_.limits.maxTimeSeconds) timeLimitAlarm();
       continue;
     }
