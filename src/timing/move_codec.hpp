@@ -79,7 +79,8 @@ struct History {
   alignas(16) double offset[kMaxAxes] = {};  // mend - end when mend was last sent
 };
 
-// Any record: what differs from the moves before is sent.
+// Any record: what differs from the moves before is sent (for the usual move the same
+// record as encodeUsual's).
 template <size_t N>
 [[gnu::noinline]] uint64_t encodeAny(const MoveEvent& e, uint64_t* w, History& h,
                                      uint64_t kind) {

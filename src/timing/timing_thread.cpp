@@ -260,10 +260,11 @@ void TimingThread::waitFor(uint64_t head, uint64_t slot) {
 // Only what the stage reads, and of that only what the moves before do not say
 // (move_codec.hpp); the worker rebuilds the event from it. The batch is published (and the
 // worker's failure looked at: only the stage itself could raise one here) every kBatch words.
+// onMove tried the usual move's test already (or found no room for it).
 void TimingThread::queueCompact(const MoveEvent& e) {
   uint64_t* w = reserve(movecodec::kMaxWords);
-  tail_ += six_ ? movecodec::encode<kMaxAxes>(e, w, sent_, kCompact)
-                : movecodec::encode<3>(e, w, sent_, kCompact);
+  tail_ += six_ ? movecodec::encodeAny<kMaxAxes>(e, w, sent_, kCompact)
+                : movecodec::encodeAny<3>(e, w, sent_, kCompact);
   if (tail_ - publishedLocal_ >= kBatch) publishMoves();
 }
 
