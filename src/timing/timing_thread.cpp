@@ -231,7 +231,15 @@ void TimingThread::publish(bool wake) {
   if (tail_ != publishedLocal_) {
     publishedLocal_ = tail_;
     slotPublished_ = slotTail_;
-    published_.store(tail_);  // seq_cst: ordered before the load of workerSleeps_
+    // When the control must have the worker awake (it waits for it, or the run ends) the
+    // store is seq_cst, ordered before the load of workerSleeps_. Otherwise a plain release
+    // store: a seq_cst one is a fence that waits for every record store before it to reach
+    // the cache (each line first taken back from the worker's core), once a batch; a worker
+    // that falls asleep just then and is not woken wakes by itself within kNap.
+    if (wake)
+      published_.store(tail_);
+    else
+      published_.store(tail_, std::memory_order_release);
   }
   if (workerSleeps_.load() &&
       (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWords / 2 ||

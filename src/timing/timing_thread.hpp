@@ -175,8 +175,10 @@ class TimingThread final : public EventSink {
   bool finished_ = false;
   bool rethrown_ = false;
 
-  // Producer-only state.
-  uint64_t tail_ = 0;            // stream words written
+  // Producer-only state, on cache lines of its own: the control writes tail_ and sent_ at
+  // every move, and the worker reads the fields above (stage_, six_) at every record, so
+  // sharing a line would move it between the cores once a move.
+  alignas(64) uint64_t tail_ = 0;  // stream words written
   uint64_t roomEnd_ = 0;         // a record fits when it ends here at most (reserveSlow)
   uint64_t publishedLocal_ = 0;  // the last tail_ published
   uint64_t headSeen_ = 0;        // the worker's head as last read
