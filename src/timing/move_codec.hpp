@@ -73,8 +73,8 @@ struct History {
   uint64_t fileLine = uint64_t{1} << 32;  // file | line << 32 the next move would have
   const std::string* programName = nullptr;
   uint64_t feed = 0;             // bits
-  uint64_t modeBits = ~uint64_t{0};  // none yet: the first record sends them
-  uint64_t header = 0;           // a record with no flags (0: not known yet)
+  uint64_t modeBits = ~uint64_t{0};  // none yet: no move has them, the first record sends them
+  uint64_t header = 0;               // a record with no flags (set by the first record)
   alignas(16) double end[kMaxAxes] = {};     // the previous move's end
   alignas(16) double offset[kMaxAxes] = {};  // mend - end when mend was last sent
 };
@@ -169,7 +169,7 @@ inline uint64_t encodeUsual(const MoveEvent& e, uint64_t* w, History& h) {
     diff |= (bitsOf(e.start[k]) ^ bitsOf(h.end[k])) |
             (bitsOf(e.start[k] + h.offset[k]) ^ bitsOf(e.mstart[k])) |
             (bitsOf(end[k] + h.offset[k]) ^ bitsOf(e.mend[k]));
-  if (diff != 0 || h.header == 0) [[unlikely]]
+  if (diff != 0) [[unlikely]]  // also the first move: no modes are remembered yet
     return 0;
   w[0] = h.header | uint64_t{static_cast<uint32_t>(e.at.n)} << 32;
   std::memcpy(w + 1, &e.length, 2 * sizeof(double));

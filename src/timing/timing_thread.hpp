@@ -213,7 +213,8 @@ class TimingThread final : public EventSink {
   uint64_t inputs_ = 0, maxBound_ = 0, workerBoundSum_ = 0;
 
   // The stream itself: written by the producer only, read by the worker only.
-  alignas(64) uint64_t ring_[kWords] = {};
+  // (Not cleared: the worker reads only words the control has published.)
+  alignas(64) uint64_t ring_[kWords];
 
   std::thread thread_;  // last: started when everything above is ready
 };
