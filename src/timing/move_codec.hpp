@@ -2,14 +2,15 @@
 // The compact record a move crosses the cores in (timing_thread.*): only the fields of a
 // MoveEvent the time stage reads, and of those only what the moves before do not already
 // say. What crosses between the cores is what the control pays for (every cache line it
-// writes is read on the other core), so a plain line of a CAM program, whose start is the
-// previous end, whose offsets, feed and modes did not change and whose line follows the
-// previous one, takes 6 words (header, length, time, end X Y Z) instead of 19.
+// writes is read on the other core), so a plain line of a CAM program, which starts where
+// the previous move ended, whose feed and modes did not change and whose line follows the
+// previous one, takes 9 words (header, length, time, end and mend X Y Z) instead of 19.
 //
-// Every value that is left out is derived on the worker by exactly the operation the
-// control used to test that it may be left out (the same IEEE additions on the same bits),
-// so the rebuilt event has the control's bits in every field the stage reads; a value that
-// does not derive bit for bit (a -0.0, a NaN, a rounding) is sent.
+// What a record leaves out is a copy of what the worker already has (the previous move's
+// end, mend, feed, modes), tested bit for bit (a -0.0 is not a +0.0), so the rebuilt event
+// has the control's bits in every field the stage reads. mend is always sent: it cannot be
+// derived from end exactly (the executor rounds each from its own nanometre integers, and a
+// real work offset makes end + (mend - end) differ from mend in the last bits).
 //
 // Record: header (kind | words << 8 | flags << 16 | the N number << 32), then what the
 // flags say, in this order:
@@ -19,13 +20,13 @@
 //   length, time                                  always
 //   start (N words)                               fStart; else the previous end
 //   end (N words)                                 always
-//   mstart (N words)                              fMstart; else start + offset
-//   mend (N words)                                fMend, and offset = mend - end; else
-//                                                 end + offset
+//   mstart (N words)                              fMstart; else the previous mend
+//   mend (N words)                                always
 //   perRev, surfaceSpeed, rpmLimit                fSpin; else 0
 //   centre (3 words), plane                       fArc; else {} and 17
 // N is 3 on a machine without A, B and C (the stage reads their values only to see whether
-// they move, and there they never do) and 6 otherwise. offset starts at 0 on both sides.
+// they move, and there they never do) and 6 otherwise. Before the first record the worker's
+// "previous" values are a default MoveEvent's, and so are the control's.
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -35,8 +36,8 @@
 
 namespace ncvm::movecodec {
 
-constexpr uint64_t fMode = 1, fOrigin = 2, fFeed = 4, fStart = 8, fMstart = 16, fMend = 32,
-                   fSpin = 64, fArc = 128;
+constexpr uint64_t fMode = 1, fOrigin = 2, fFeed = 4, fStart = 8, fMstart = 16, fSpin = 32,
+                   fArc = 64;
 // The longest record: header, modes, origin, feed, length, time, four arrays of six, spin,
 // arc.
 constexpr uint64_t kMaxWords = 1 + 1 + 2 + 1 + 2 + 4 * kMaxAxes + 3 + 4;
@@ -67,16 +68,16 @@ inline uint64_t modeBitsOf(const MoveEvent& e) {
          uint64_t{threadSkip} << 24;
 }
 
-// What the control remembers of the moves it sent (the worker keeps the same in the event it
-// rebuilds, and the offset beside it).
+// What the control remembers of the moves it sent (the worker has the same in the event it
+// rebuilds).
 struct History {
   uint64_t fileLine = uint64_t{1} << 32;  // file | line << 32 the next move would have
   const std::string* programName = nullptr;
   uint64_t feed = 0;             // bits
   uint64_t modeBits = ~uint64_t{0};  // none yet: no move has them, the first record sends them
   uint64_t header = 0;               // a record with no flags (set by the first record)
-  alignas(16) double end[kMaxAxes] = {};     // the previous move's end
-  alignas(16) double offset[kMaxAxes] = {};  // mend - end when mend was last sent
+  alignas(16) double end[kMaxAxes] = {};   // the previous move's end
+  alignas(16) double mend[kMaxAxes] = {};  // and mend
 };
 
 // Any record: what differs from the moves before is sent (for the usual move the same
@@ -120,20 +121,15 @@ template <size_t N>
   std::memcpy(h.end, e.end.data(), kLanes<N> * sizeof(double));
   p += N;
   diff = 0;
-  for (size_t k = 0; k < N; ++k) diff |= bitsOf(e.start[k] + h.offset[k]) ^ bitsOf(e.mstart[k]);
+  for (size_t k = 0; k < N; ++k) diff |= bitsOf(e.mstart[k]) ^ bitsOf(h.mend[k]);
   if (diff) {
     f |= fMstart;
     std::memcpy(p, e.mstart.data(), N * sizeof(double));
     p += N;
   }
-  diff = 0;
-  for (size_t k = 0; k < N; ++k) diff |= bitsOf(e.end[k] + h.offset[k]) ^ bitsOf(e.mend[k]);
-  if (diff) {
-    f |= fMend;
-    std::memcpy(p, e.mend.data(), N * sizeof(double));
-    p += N;
-    for (size_t k = 0; k < N; ++k) h.offset[k] = e.mend[k] - e.end[k];
-  }
+  std::memcpy(p, e.mend.data(), N * sizeof(double));
+  std::memcpy(h.mend, e.mend.data(), kLanes<N> * sizeof(double));
+  p += N;
   if ((bitsOf(e.perRev) | bitsOf(e.surfaceSpeed) | bitsOf(e.rpmLimit)) != 0) {
     f |= fSpin;
     p[0] = bitsOf(e.perRev), p[1] = bitsOf(e.surfaceSpeed), p[2] = bitsOf(e.rpmLimit);
@@ -145,15 +141,15 @@ template <size_t N>
     p[3] = static_cast<uint32_t>(e.plane);
     p += 4;
   }
-  h.header = kind | (3 + N) << 8;
+  h.header = kind | (3 + 2 * N) << 8;
   const auto words = static_cast<uint64_t>(p - w);
   w[0] = kind | words << 8 | f << 16 | uint64_t{static_cast<uint32_t>(e.at.n)} << 32;
   return words;
 }
 
-// The usual move (a line on from the previous one: nothing but N, length, time and end to
-// say), found with one test: writes its record at w and returns its length in words, or 0
-// when e is not one (then encode() writes it).
+// The usual move (a line on from the previous one: nothing but N, length, time, end and mend
+// to say), found with one test: writes its record at w and returns its length in words, or
+// 0 when e is not one (then encode() writes it).
 template <size_t N>
 inline uint64_t encodeUsual(const MoveEvent& e, uint64_t* w, History& h) {
   constexpr size_t L = kLanes<N>;
@@ -163,20 +159,18 @@ inline uint64_t encodeUsual(const MoveEvent& e, uint64_t* w, History& h) {
                    std::bit_cast<uintptr_t>(h.programName)) |
                   (bitsOf(e.feed) ^ h.feed) | bitsOf(e.perRev) | bitsOf(e.surfaceSpeed) |
                   bitsOf(e.rpmLimit) | (modeBitsOf(e) ^ h.modeBits) | uint64_t{e.arc};
-  double end[L];
-  std::memcpy(end, e.end.data(), sizeof end);
   for (size_t k = 0; k < L; ++k)
-    diff |= (bitsOf(e.start[k]) ^ bitsOf(h.end[k])) |
-            (bitsOf(e.start[k] + h.offset[k]) ^ bitsOf(e.mstart[k])) |
-            (bitsOf(end[k] + h.offset[k]) ^ bitsOf(e.mend[k]));
+    diff |= (bitsOf(e.start[k]) ^ bitsOf(h.end[k])) | (bitsOf(e.mstart[k]) ^ bitsOf(h.mend[k]));
   if (diff != 0) [[unlikely]]  // also the first move: no modes are remembered yet
     return 0;
   w[0] = h.header | uint64_t{static_cast<uint32_t>(e.at.n)} << 32;
   std::memcpy(w + 1, &e.length, 2 * sizeof(double));
-  std::memcpy(w + 3, end, N * sizeof(double));
-  std::memcpy(h.end, end, sizeof end);
+  std::memcpy(w + 3, e.end.data(), N * sizeof(double));
+  std::memcpy(w + 3 + N, e.mend.data(), N * sizeof(double));
+  std::memcpy(h.end, e.end.data(), L * sizeof(double));
+  std::memcpy(h.mend, e.mend.data(), L * sizeof(double));
   h.fileLine = fileLine + (uint64_t{1} << 32);
-  return 3 + N;
+  return 3 + 2 * N;
 }
 
 // Writes the record of e at w (room for kMaxWords) with the given kind byte (the same for
@@ -189,10 +183,9 @@ inline uint64_t encode(const MoveEvent& e, uint64_t* w, History& h, uint64_t kin
 }
 
 // Rebuilds into e (the previous record's event: what a record leaves out comes from it)
-// the fields the stage reads; the others keep what they had. offset: the worker's copy of
-// History::offset.
+// the fields the stage reads; the others keep what they had.
 template <size_t N>
-inline void decode(const uint64_t* w, MoveEvent& e, double* offset) {
+inline void decode(const uint64_t* w, MoveEvent& e) {
   const uint64_t header = w[0];
   const uint64_t f = (header >> 16) & 0xffff;
   const uint64_t* p = w + 1;
@@ -228,15 +221,10 @@ inline void decode(const uint64_t* w, MoveEvent& e, double* offset) {
     std::memcpy(e.mstart.data(), p, N * sizeof(double));
     p += N;
   } else {
-    for (size_t k = 0; k < N; ++k) e.mstart[k] = e.start[k] + offset[k];
+    std::memcpy(e.mstart.data(), e.mend.data(), N * sizeof(double));
   }
-  if (f & fMend) [[unlikely]] {
-    std::memcpy(e.mend.data(), p, N * sizeof(double));
-    p += N;
-    for (size_t k = 0; k < N; ++k) offset[k] = e.mend[k] - e.end[k];
-  } else {
-    for (size_t k = 0; k < N; ++k) e.mend[k] = e.end[k] + offset[k];
-  }
+  std::memcpy(e.mend.data(), p, N * sizeof(double));
+  p += N;
   if (f & fSpin) [[unlikely]] {
     std::memcpy(&e.perRev, p, sizeof(double));
     std::memcpy(&e.surfaceSpeed, p + 1, sizeof(double));

@@ -448,9 +448,9 @@ void TimingThread::work() {
 void TimingThread::deliverCompact(const uint64_t* w, uint64_t) {
   MoveEvent& e = move_;
   if (six_)
-    movecodec::decode<kMaxAxes>(w, e, offset_);
+    movecodec::decode<kMaxAxes>(w, e);
   else
-    movecodec::decode<3>(w, e, offset_);
+    movecodec::decode<3>(w, e);
   try {
     stage_->onMove(e);
   } catch (...) {

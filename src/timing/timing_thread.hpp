@@ -9,7 +9,7 @@
 // What crosses between the cores is what costs (each cache line the control writes is read
 // on the other core): without a sink after the stage a move goes as a compact record of
 // 8-byte words, only the fields the stage reads and of those only what the moves before do
-// not say (move_codec.hpp: 6 words, 48 bytes, for a plain three-axis line), written one
+// not say (move_codec.hpp: 9 words, 72 bytes, for a plain three-axis line), written one
 // after the other. Every other event, and
 // every move when a sink follows the stage (the trace needs the whole event), goes into a
 // slot of a small side ring, and the stream carries one word saying "the next slot".
@@ -208,7 +208,6 @@ class TimingThread final : public EventSink {
   // Worker-only state: the move a compact record is read into (the fields the stage does not
   // read keep their defaults), and the bound bookkeeping.
   alignas(64) MoveEvent move_;
-  alignas(16) double offset_[kMaxAxes] = {};  // the worker's copy of sent_.offset
   Counter counter_;
   uint64_t inputs_ = 0, maxBound_ = 0, workerBoundSum_ = 0;
 

@@ -79,10 +79,9 @@ std::vector<uint64_t> roundTrip(const std::vector<MoveEvent>& moves) {
   EXPECT_EQ(at2, at);
   EXPECT_TRUE(std::equal(any.begin(), any.begin() + static_cast<std::ptrdiff_t>(at), stream.begin()));
   MoveEvent got;
-  double offset[kMaxAxes] = {};
   at = 0;
   for (size_t k = 0; k < moves.size(); ++k) {
-    mc::decode<N>(&stream[at], got, offset);
+    mc::decode<N>(&stream[at], got);
     expectSame(moves[k], got, N, static_cast<int>(k));
     at += sizes[k];
   }
@@ -107,25 +106,25 @@ MoveEvent lineOn(const MoveEvent& prev, double dx, double dy, double dz, const d
 
 }  // namespace
 
-TEST(MoveCodec, UsualLineTakesSixWords) {
+TEST(MoveCodec, UsualLineTakesNineWords) {
   const std::string prog = "O1";
   std::vector<MoveEvent> moves;
   MoveEvent e;
   e.at = EventOrigin{0, 7, -1, &prog};
   e.feed = 3000;
   e.end = {1, 2, -1, 0, 0, 0};
-  e.mend = {1 - 200.5, 2 - 150.25, -1 - 300.125, 0, 0, 0};
+  const double off[3] = {-123.4567, -45.6789, -300.1234};
+  e.mend = {1 + off[0], 2 + off[1], -1 + off[2], 0, 0, 0};
   e.length = 3, e.time = 0.06;
   moves.push_back(e);
-  const double off[3] = {-200.5, -150.25, -300.125};
   for (int k = 0; k < 50; ++k) moves.push_back(lineOn(moves.back(), 0.2, 0.0, 0.01 * (k % 3), off));
   std::vector<uint64_t> sizes = roundTrip<3>(moves);
-  // The first record says everything; from the third on (when the offset is known and the
-  // move follows on) only N, length, time and end.
-  EXPECT_GT(sizes[0], 6u);
-  for (size_t k = 2; k < sizes.size(); ++k) EXPECT_EQ(sizes[k], 6u) << k;
+  // The first record says everything; from the second on only N, length, time, end and
+  // mend (a work offset that is not a round number: mend is sent, never derived).
+  EXPECT_GT(sizes[0], 9u);
+  for (size_t k = 1; k < sizes.size(); ++k) EXPECT_EQ(sizes[k], 9u) << k;
   std::vector<uint64_t> six = roundTrip<kMaxAxes>(moves);
-  for (size_t k = 2; k < six.size(); ++k) EXPECT_EQ(six[k], 9u) << k;
+  for (size_t k = 1; k < six.size(); ++k) EXPECT_EQ(six[k], 15u) << k;
 }
 
 // Each thing a record may leave out, changed on its own between usual moves, and mixed at
@@ -165,7 +164,8 @@ TEST(MoveCodec, EveryOmissionRebuildsTheControlsBits) {
   changed([](MoveEvent& m) { m.skip = true; });                // G31
   changed([](MoveEvent& m) { m.start[1] += 1e-9; });           // start is not the last end
   changed([](MoveEvent& m) { m.start[2] = -0.0, m.end[2] = 0; });  // -0.0 is not +0.0
-  changed([](MoveEvent& m) { m.mstart[0] += 10; });            // mstart off the offset
+  changed([](MoveEvent& m) { m.mstart[0] += 10; });            // mstart is not the last mend
+  changed([](MoveEvent& m) { m.mstart[1] = -0.0, m.mend[1] = 0; });  // -0.0 is not +0.0
   changed([](MoveEvent& m) { m.mend[2] += 0.5; });             // the offset changes
   // An offset that does not round-trip: end + (mend - end) is not mend.
   changed([](MoveEvent& m) { m.end[0] = 1, m.mend[0] = 1e-20; });
