@@ -118,8 +118,12 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   // so it keeps them on the control's thread.
   const int threads = timingThreads_ >= 0 ? timingThreads_ : setup_.timing.threads;
   std::unique_ptr<TimingThread> worker;
-  if (timing_ && threads > 0 && !inspector_ && TimingThread::usable(sink))
-    worker = std::make_unique<TimingThread>(sink, files_);
+  if (timing_ && threads > 0 && !inspector_ && TimingThread::usable(sink)) {
+    // On a machine without A, B and C the moves go to the worker with three axes.
+    bool abc = false;
+    for (size_t k = 3; k < kMaxAxes; ++k) abc = abc || setup_.axes[k].present;
+    worker = std::make_unique<TimingThread>(sink, files_, abc);
+  }
   usedThread_ = worker != nullptr;
   // Without a sink the stage keeps no events, only what the time report needs.
   if (timing_) stage = std::make_unique<TimingStage>(setup_, worker ? worker->stageSink() : sink);

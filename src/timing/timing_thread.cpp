@@ -37,55 +37,9 @@ static_assert((TimingThread::kWords & (TimingThread::kWords - 1)) == 0, "a power
 static_assert((TimingThread::kSlots & (TimingThread::kSlots - 1)) == 0, "a power of two");
 static_assert(kBatch <= TimingThread::kWords / 4 && kSlotBatch < TimingThread::kSlots / 4);
 
-// A stream record: its first word is the header, kind | words << 8 | flags << 16 | mode <<
-// 24 | MoveEvent's exactStop, inch << 32 | thread, skip << 48 (the bools' bytes). A compact
-// move then has: the origin as it is in the event (3 words), feed, length, time; start,
-// end, mstart, mend (X Y Z, or all six axes); perRev, surfaceSpeed, rpmLimit (when any is
-// set); the arc's centre and plane (arcs).
+// A stream record: its first word is the header, whose low byte is the kind and the next
+// one the record's length in words; a compact move is laid out as move_codec.hpp says.
 constexpr uint64_t kPad = 0, kCompact = 1, kSlot = 2;
-constexpr uint64_t fSix = 1;   // the axes arrays have six values (an A, B or C is not +0.0)
-constexpr uint64_t fSpin = 2;  // perRev, surfaceSpeed, rpmLimit follow
-constexpr uint64_t fArc = 4;   // centre and plane follow
-constexpr uint64_t kMaxCompact = 7 + 4 * kMaxAxes + 3 + 4;
-
-inline uint64_t bits(double d) {
-  return std::bit_cast<uint64_t>(d);
-}
-inline double real(uint64_t w) {
-  return std::bit_cast<double>(w);
-}
-template <class T>
-inline uint64_t word(const T& v) {
-  static_assert(sizeof(T) <= sizeof(uint64_t));
-  uint64_t w = 0;
-  std::memcpy(&w, &v, sizeof(T));
-  return w;
-}
-
-// The event's start, end, mstart and mend, one after the other (copied as one block).
-constexpr size_t kAxesAt = offsetof(MoveEvent, start);
-static_assert(offsetof(MoveEvent, end) == kAxesAt + sizeof(AxisArray) &&
-              offsetof(MoveEvent, mstart) == kAxesAt + 2 * sizeof(AxisArray) &&
-              offsetof(MoveEvent, mend) == kAxesAt + 3 * sizeof(AxisArray));
-static_assert(offsetof(MoveEvent, length) == offsetof(MoveEvent, feed) + sizeof(double) &&
-              offsetof(MoveEvent, time) == offsetof(MoveEvent, feed) + 2 * sizeof(double));
-static_assert(offsetof(MoveEvent, inch) == offsetof(MoveEvent, exactStop) + 1 &&
-              offsetof(MoveEvent, skip) == offsetof(MoveEvent, thread) + 1);
-static_assert(sizeof(EventOrigin) == 3 * sizeof(uint64_t));
-
-// The value number k of the four arrays, as bits.
-inline uint64_t axisWord(const MoveEvent& e, size_t k) {
-  uint64_t w;
-  std::memcpy(&w, reinterpret_cast<const char*>(&e) + kAxesAt + k * sizeof(double), sizeof w);
-  return w;
-}
-// Whether any A, B or C value of the four arrays has a bit set (-0.0 counts: the worker
-// must get exactly the control's values), so the record needs six axes.
-inline bool hasAbc(const MoveEvent& e) {
-  return (axisWord(e, 3) | axisWord(e, 4) | axisWord(e, 5) | axisWord(e, 9) | axisWord(e, 10) |
-          axisWord(e, 11) | axisWord(e, 15) | axisWord(e, 16) | axisWord(e, 17) | axisWord(e, 21) |
-          axisWord(e, 22) | axisWord(e, 23)) != 0;
-}
 
 // The whole event (for the sinks after the stage), the dog-leg path only as far as it is
 // used.
@@ -136,11 +90,12 @@ bool TimingThread::usable(const EventSink* downstream) {
   return (!downstream || downstream->runsOnAnyThread()) && std::thread::hardware_concurrency() > 1;
 }
 
-TimingThread::TimingThread(EventSink* downstream, const SourceFiles& files)
+TimingThread::TimingThread(EventSink* downstream, const SourceFiles& files, bool abcAxes)
     : downstream_(downstream),
       files_(files),
       limited_(downstream && downstream->byteHeadroom() != UINT64_MAX),
       compact_(!downstream),
+      six_(abcAxes),
       slots_(std::make_unique<Record[]>(kSlots)),
       counter_(downstream) {}
 
@@ -211,13 +166,15 @@ bool TimingThread::admit(const EventOrigin& at, std::string_view t0, std::string
   return false;
 }
 
-uint64_t* TimingThread::reserve(uint64_t words) {
-  uint64_t off = tail_ & (kWords - 1);
-  if (off + words <= kWords && tail_ + words - headSeen_ <= kWords) [[likely]] {
-    // The lines the next records go to, a few records ahead.
-    prefetchWrite(&ring_[(off + 64) & (kWords - 1)]);
-    prefetchWrite(&ring_[(off + 72) & (kWords - 1)]);
-    return &ring_[off];
+// roomEnd_ is where the free part of the stream ends, or the stream itself (a record does
+// not wrap): the lesser of the two as last computed (the worker's head only moves on, so
+// an old value is too small, never too large).
+inline uint64_t* TimingThread::reserve(uint64_t words) {
+  if (tail_ + words <= roomEnd_) [[likely]] {
+    // The line the records about 10 moves on go to (one a record: most are shorter than a
+    // line).
+    prefetchWrite(&ring_[(tail_ + 64) & (kWords - 1)]);
+    return &ring_[tail_ & (kWords - 1)];
   }
   return reserveSlow(words);
 }
@@ -225,19 +182,18 @@ uint64_t* TimingThread::reserve(uint64_t words) {
 uint64_t* TimingThread::reserveSlow(uint64_t words) {
   uint64_t off = tail_ & (kWords - 1);
   uint64_t pad = off + words > kWords ? kWords - off : 0;
+  headSeen_ = head_.load(std::memory_order_acquire);  // roomEnd_ from a fresh head
   if (tail_ + pad + words - headSeen_ > kWords) {
-    headSeen_ = head_.load(std::memory_order_acquire);
-    if (tail_ + pad + words - headSeen_ > kWords) {
-      // Full: wait until half of it is free again, not for every single record.
-      publish(true);
-      waitFor(tail_ + pad + words - kWords / 2, 0);
-    }
+    // Full: wait until half of it is free again, not for every single record.
+    publish(true);
+    waitFor(tail_ + pad + words - kWords / 2, 0);
   }
   if (pad) {
     ring_[off] = kPad | pad << 8;
     tail_ += pad;
     off = 0;
   }
+  roomEnd_ = std::min(headSeen_ + kWords, (tail_ & ~(kWords - 1)) + kWords);
   return &ring_[off];
 }
 
@@ -275,7 +231,15 @@ void TimingThread::publish(bool wake) {
   if (tail_ != publishedLocal_) {
     publishedLocal_ = tail_;
     slotPublished_ = slotTail_;
-    published_.store(tail_);  // seq_cst: ordered before the load of workerSleeps_
+    // When the control must have the worker awake (it waits for it, or the run ends) the
+    // store is seq_cst, ordered before the load of workerSleeps_. Otherwise a plain release
+    // store: a seq_cst one is a fence that waits for every record store before it to reach
+    // the cache (each line first taken back from the worker's core), once a batch; a worker
+    // that falls asleep just then and is not woken wakes by itself within kNap.
+    if (wake)
+      published_.store(tail_);
+    else
+      published_.store(tail_, std::memory_order_release);
   }
   if (workerSleeps_.load() &&
       (wake || tail_ - head_.load(std::memory_order_relaxed) >= kWords / 2 ||
@@ -301,52 +265,43 @@ void TimingThread::waitFor(uint64_t head, uint64_t slot) {
   done();
 }
 
-// Only what the stage reads: the worker rebuilds the event from it (docs/performance.md).
-// On a machine without A, B and C (whose events have +0.0 there) three axes of each array.
+// Only what the stage reads, and of that only what the moves before do not say
+// (move_codec.hpp); the worker rebuilds the event from it. The batch is published (and the
+// worker's failure looked at: only the stage itself could raise one here) every kBatch words.
+// onMove tried the usual move's test already (or found no room for it).
 void TimingThread::queueCompact(const MoveEvent& e) {
-  uint64_t* w = reserve(kMaxCompact);
-  const auto* from = reinterpret_cast<const char*>(&e);
-  std::memcpy(w + 1, &e.at, sizeof(EventOrigin));
-  std::memcpy(w + 4, &e.feed, 3 * sizeof(double));
-  uint64_t* p = w + 7;
-  uint64_t f = 0;
-  if (!hasAbc(e)) [[likely]] {
-    constexpr size_t kXyz = 3 * sizeof(double), kArray = sizeof(AxisArray);
-    std::memcpy(p, from + kAxesAt, kXyz);
-    std::memcpy(p + 3, from + kAxesAt + kArray, kXyz);
-    std::memcpy(p + 6, from + kAxesAt + 2 * kArray, kXyz);
-    std::memcpy(p + 9, from + kAxesAt + 3 * kArray, kXyz);
-    p += 12;
-  } else {
-    f |= fSix;
-    std::memcpy(p, from + kAxesAt, 4 * sizeof(AxisArray));
-    p += 4 * kMaxAxes;
-  }
-  if ((bits(e.perRev) | bits(e.surfaceSpeed) | bits(e.rpmLimit)) != 0) [[unlikely]] {
-    f |= fSpin;
-    p[0] = bits(e.perRev), p[1] = bits(e.surfaceSpeed), p[2] = bits(e.rpmLimit);
-    p += 3;
-  }
-  if (e.arc) {
-    f |= fArc;
-    p[0] = bits(e.center[0]), p[1] = bits(e.center[1]), p[2] = bits(e.center[2]);
-    p[3] = static_cast<uint64_t>(static_cast<uint32_t>(e.plane));
-    p += 4;
-  }
-  uint16_t stopInch, threadSkip;
-  std::memcpy(&stopInch, &e.exactStop, 2);
-  std::memcpy(&threadSkip, &e.thread, 2);
-  const auto words = static_cast<uint64_t>(p - w);
-  w[0] = kCompact | words << 8 | f << 16 | word(e.mode) << 24 | uint64_t{stopInch} << 32 |
-         uint64_t{threadSkip} << 48;
-  written(words);
+  uint64_t* w = reserve(movecodec::kMaxWords);
+  tail_ += six_ ? movecodec::encodeAny<kMaxAxes>(e, w, sent_, kCompact)
+                : movecodec::encodeAny<3>(e, w, sent_, kCompact);
+  if (tail_ - publishedLocal_ >= kBatch) publishMoves();
 }
 
+void TimingThread::publishMoves() {
+  publish();
+  if (failed_.load(std::memory_order_acquire) && !rethrown_) rethrowFailure();
+}
+
+// The usual move of a compact stream takes the path without calls (the others are tail
+// calls), so it pays no register saves.
 void TimingThread::onMove(const MoveEvent& e) {
-  // Nothing after the stage: the stage reads only part of the event (the worker's failure,
-  // which only the stage itself could raise here, is looked at once per batch).
-  if (compact_) [[likely]]
-    return queueCompact(e);
+  if (compact_ && tail_ + movecodec::kMaxWords <= roomEnd_) [[likely]] {
+    uint64_t* w = &ring_[tail_ & (kWords - 1)];
+    // The line the records about 10 moves on go to (one a record: most are shorter).
+    prefetchWrite(&ring_[(tail_ + 64) & (kWords - 1)]);
+    const uint64_t words = six_ ? movecodec::encodeUsual<kMaxAxes>(e, w, sent_)
+                                : movecodec::encodeUsual<3>(e, w, sent_);
+    if (words != 0) [[likely]] {
+      tail_ += words;
+      if (tail_ - publishedLocal_ >= kBatch) [[unlikely]]
+        return publishMoves();
+      return;
+    }
+  }
+  return onMoveSlow(e);
+}
+
+void TimingThread::onMoveSlow(const MoveEvent& e) {
+  if (compact_) return queueCompact(e);
   if (!admit(e.at)) return stage_->onMove(e);
   Record& r = claim();
   r.kind = Kind::Move;
@@ -490,52 +445,12 @@ void TimingThread::work() {
   }
 }
 
-void TimingThread::deliverCompact(const uint64_t* w, uint64_t header) {
+void TimingThread::deliverCompact(const uint64_t* w, uint64_t) {
   MoveEvent& e = move_;
-  auto* to = reinterpret_cast<char*>(&e);
-  const uint64_t f = (header >> 16) & 0xff;
-  e.mode = static_cast<MoveMode>((header >> 24) & 0xff);
-  std::memcpy(static_cast<void*>(&e.at), w + 1, sizeof(EventOrigin));
-  std::memcpy(&e.feed, w + 4, 3 * sizeof(double));
-  const uint64_t* p = w + 7;
-  // What a record leaves out is zero (or 17 for the plane); the move keeps it from the last
-  // record that had it, so it is cleared only when that one did.
-  if (!(f & fSix)) {
-    for (AxisArray* a : {&e.start, &e.end, &e.mstart, &e.mend}) {
-      std::memcpy(a->data(), p, 3 * sizeof(double));
-      p += 3;
-    }
-    if (hadSix_) {
-      for (AxisArray* a : {&e.start, &e.end, &e.mstart, &e.mend}) (*a)[3] = (*a)[4] = (*a)[5] = 0;
-      hadSix_ = false;
-    }
-  } else {
-    std::memcpy(to + kAxesAt, p, 4 * sizeof(AxisArray));
-    p += 4 * kMaxAxes;
-    hadSix_ = true;
-  }
-  if (f & fSpin) {
-    e.perRev = real(p[0]), e.surfaceSpeed = real(p[1]), e.rpmLimit = real(p[2]);
-    p += 3;
-    hadSpin_ = true;
-  } else if (hadSpin_) {
-    e.perRev = e.surfaceSpeed = e.rpmLimit = 0;
-    hadSpin_ = false;
-  }
-  e.arc = f & fArc;
-  if (e.arc) {
-    e.center = {real(p[0]), real(p[1]), real(p[2])};
-    e.plane = static_cast<int>(static_cast<uint32_t>(p[3]));
-    hadArc_ = true;
-  } else if (hadArc_) {
-    e.center = {};
-    e.plane = 17;
-    hadArc_ = false;
-  }
-  const auto stopInch = static_cast<uint16_t>(header >> 32),
-             threadSkip = static_cast<uint16_t>(header >> 48);
-  std::memcpy(&e.exactStop, &stopInch, 2);
-  std::memcpy(&e.thread, &threadSkip, 2);
+  if (six_)
+    movecodec::decode<kMaxAxes>(w, e);
+  else
+    movecodec::decode<3>(w, e);
   try {
     stage_->onMove(e);
   } catch (...) {

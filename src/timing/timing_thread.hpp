@@ -8,8 +8,9 @@
 //
 // What crosses between the cores is what costs (each cache line the control writes is read
 // on the other core): without a sink after the stage a move goes as a compact record of
-// 8-byte words, only the fields the stage reads (about 100 bytes for a three-axis move whose
-// start is the previous move's end), written one after the other. Every other event, and
+// 8-byte words, only the fields the stage reads and of those only what the moves before do
+// not say (move_codec.hpp: 9 words, 72 bytes, for a plain three-axis line), written one
+// after the other. Every other event, and
 // every move when a sink follows the stage (the trace needs the whole event), goes into a
 // slot of a small side ring, and the stream carries one word saying "the next slot".
 //
@@ -32,6 +33,7 @@
 
 #include "canon/events.hpp"
 #include "core/source.hpp"
+#include "timing/move_codec.hpp"
 
 namespace ncvm {
 
@@ -46,9 +48,10 @@ class TimingThread final : public EventSink {
   static constexpr uint64_t kSlots = 256;
 
   // downstream: the sinks after the stage (may be nullptr), asked for their headroom; files:
-  // for the byte bound of an event's names. Build the stage with stageSink() as its next
+  // for the byte bound of an event's names; abcAxes: the machine has an A, B or C axis (else
+  // the compact records carry three axes). Build the stage with stageSink() as its next
   // sink, then start() the worker with it.
-  TimingThread(EventSink* downstream, const SourceFiles& files);
+  TimingThread(EventSink* downstream, const SourceFiles& files, bool abcAxes = true);
   EventSink* stageSink();
   void start(TimingStage& stage);
   ~TimingThread() override;
@@ -120,6 +123,8 @@ class TimingThread final : public EventSink {
   uint64_t* reserveSlow(uint64_t words);  // the stream's end, or full
   void written(uint64_t words);           // the record reserve() returned is complete
   void queueCompact(const MoveEvent& e);
+  void publishMoves();  // a batch of compact records is complete
+  void onMoveSlow(const MoveEvent& e);  // every move but the usual compact one
   Record& claim();  // the next free slot (waits while the side ring is full)
   // An event without texts of its own: copied whole into its slot of the record, or (when
   // admit says so) handed straight to the stage.
@@ -164,13 +169,17 @@ class TimingThread final : public EventSink {
   const SourceFiles& files_;
   const bool limited_;  // a sink after the stage has a size limit: events carry bounds
   const bool compact_;  // no sink after the stage: moves go as compact records
+  const bool six_;      // compact records carry six axes (the machine has A, B or C)
   std::unique_ptr<Record[]> slots_;
   bool direct_ = false;  // the stage runs on this thread again (never goes back)
   bool finished_ = false;
   bool rethrown_ = false;
 
-  // Producer-only state.
-  uint64_t tail_ = 0;            // stream words written
+  // Producer-only state, on cache lines of its own: the control writes tail_ and sent_ at
+  // every move, and the worker reads the fields above (stage_, six_) at every record, so
+  // sharing a line would move it between the cores once a move.
+  alignas(64) uint64_t tail_ = 0;  // stream words written
+  uint64_t roomEnd_ = 0;         // a record fits when it ends here at most (reserveSlow)
   uint64_t publishedLocal_ = 0;  // the last tail_ published
   uint64_t headSeen_ = 0;        // the worker's head as last read
   uint64_t slotTail_ = 0;        // slots written
@@ -179,6 +188,7 @@ class TimingThread final : public EventSink {
   uint64_t bound_ = 0;           // the bound of the event being sent
   uint64_t boundSum_ = 0;        // sum of the bounds of the events written
   uint64_t allowedSeen_ = 0;     // allowed_ as last read
+  movecodec::History sent_;      // what the compact records so far said
 
   // Shared; each group on its own cache line, written by one side only.
   alignas(64) std::atomic<uint64_t> published_{0};  // producer: stream words the worker may take
@@ -198,12 +208,12 @@ class TimingThread final : public EventSink {
   // Worker-only state: the move a compact record is read into (the fields the stage does not
   // read keep their defaults), and the bound bookkeeping.
   alignas(64) MoveEvent move_;
-  bool hadSix_ = false, hadSpin_ = false, hadArc_ = false;  // move_ has such values
   Counter counter_;
   uint64_t inputs_ = 0, maxBound_ = 0, workerBoundSum_ = 0;
 
   // The stream itself: written by the producer only, read by the worker only.
-  alignas(64) uint64_t ring_[kWords] = {};
+  // (Not cleared: the worker reads only words the control has published.)
+  alignas(64) uint64_t ring_[kWords];
 
   std::thread thread_;  // last: started when everything above is ready
 };

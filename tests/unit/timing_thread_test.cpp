@@ -123,6 +123,53 @@ std::string latheProgram(int passes) {
   return s;
 }
 
+// A three-axis mill (three-axis records) whose moves do not all follow on from the one
+// before: work offsets (G54, G55, G92, G52) and tool lengths (G43) change between moves and
+// during them, N numbers, a loop and a subprogram call (lines out of order, another
+// program), feed changes. The compact records leave out only what did not change.
+std::string offsetProgram() {
+  return
+      "O0013\n"
+      "G90 G21 G17 G94\n"
+      "G10 L2 P1 X-100. Y-50. Z-200.\n"
+      "G10 L2 P2 X-300.5 Y-75.25 Z-210.\n"
+      "G10 L10 P1 R120.\n"
+      "G10 L10 P2 R95.5\n"
+      "G54 G00 X0 Y0 Z5.\n"
+      "G43 H1 Z5.\n"
+      "N10 G01 Z-1. F1200.\n"
+      "N20 X1. Y0.5\n"
+      "N30 X2. Y1.\n"
+      "#1=0\n"
+      "WHILE[#1LT3]DO1\n"
+      "X[3.+#1] Y1.5\n"
+      "X[3.5+#1] Y2. F1500.\n"
+      "#1=#1+1\n"
+      "END1\n"
+      "G55 X1. Y1.\n"
+      "X2. Y2.\n"
+      "G43 H2 X3. Z-1.\n"
+      "X4. Y3.\n"
+      "G92 X0 Y0\n"
+      "X1. Y1.\n"
+      "X2. Y1.5\n"
+      "G52 X5. Y5.\n"
+      "X1. Y1. F900.\n"
+      "X2. Y2.\n"
+      "G52 X0 Y0\n"
+      "M98 P0014\n"
+      "X-1. Y-1.\n"
+      "G49 X0 Y0\n"
+      "G00 Z50.\n"
+      "M30\n"
+      "O0014\n"
+      "N100 G01 X0.5 Y0.5\n"
+      "N110 X1. Y0.7\n"
+      "N120 X1.5 Y0.9 F700.\n"
+      "M99\n"
+      ;
+}
+
 TEST(TimingThread, CompactRecordsCarryWhatTheStageReads) {
   ncvm::Setup mill = withModel(true);
   applySetting(mill, "axes.A.rotary=true");
@@ -135,8 +182,10 @@ TEST(TimingThread, CompactRecordsCarryWhatTheStageReads) {
     const ncvm::Setup* setup;
     std::string text;
   };
+  const ncvm::Setup three = withModel(true), threeSimple = withModel(false);
   for (const Case& c : {Case{&mill, fiveAxisProgram(120)}, Case{&lathe, latheProgram(60)},
-                        Case{&latheSimple, latheProgram(20)}}) {
+                        Case{&latheSimple, latheProgram(20)}, Case{&three, offsetProgram()},
+                        Case{&threeSimple, offsetProgram()}}) {
     for (bool trace : {false, true}) {
       Outcome sync = runWith(*c.setup, c.text, 0, trace);
       Outcome worker = runWith(*c.setup, c.text, 1, trace);
