@@ -26,7 +26,6 @@ const char* moveModeName(MoveMode m) {
 }
 
 namespace {
-constexpr size_t kChunk = 1 << 20;
 
 // The same program name as the last one: compared inline, as the names are short.
 // Eight bytes at a time, the last (overlapping) step ending at the end; shorter names four
@@ -208,7 +207,7 @@ void TraceWriter::end() {
   checkLine();
 }
 
-void TraceWriter::checkLine() {
+void TraceWriter::checkedLine() {
   if (used_ >= kChunk && out_) flush();
   if (written_ + used_ > maxBytes_) {
     // The events the control still sends (the moves the time stage held, the alarm's

@@ -57,7 +57,11 @@ class TraceWriter final : public EventSink {
   }
   void grow(size_t n);
   void commit(const char* end) { used_ = static_cast<size_t>(end - buf_.get()); }
-  void checkLine();  // after a line: flush a full chunk, stop at the size limit
+  // After a line: flush a full chunk, stop at the size limit (the usual case inline).
+  void checkLine() {
+    if (used_ >= kChunk || written_ + used_ > maxBytes_) checkedLine();
+  }
+  void checkedLine();
   void axes(const char* key, const AxisArray& a);
   void number(double v);  // exactly as fmt's "{}" (report/json_number.hpp), faster
   void number(int64_t v);
@@ -90,6 +94,7 @@ class TraceWriter final : public EventSink {
   // write up to 15 bytes past a text.
   static constexpr size_t kLineBytes = 2048 + 128 + 4096;
   static constexpr size_t kCopySlack = 32;
+  static constexpr size_t kChunk = 1 << 20;  // bytes written to the FILE at once
   const SourceFiles& files_;
   std::FILE* out_;
   uint64_t maxBytes_;
