@@ -268,14 +268,13 @@ void copyText(char* to, const char* from, size_t len) {
 }
 }  // namespace
 
-// The texts of a move's head for its file, program and mode (names of at most 2048 bytes
+// The texts of a move's head for its file and program (names of at most 2048 bytes
 // together; longer ones are written by begin()).
-void TraceWriter::moveOrigin(const EventOrigin& at, MoveMode mode) {
+void TraceWriter::moveOrigin(const EventOrigin& at) {
   const std::string_view file = fileName(at.file);
   const std::string_view prog =
       at.programName ? programName(*at.programName) : std::string_view("null");
   moveFile_ = at.file;
-  moveMode_ = mode;
   moveHasProgram_ = at.programName != nullptr;
   moveProgram_ = at.programName ? *at.programName : std::string();
   moveLongNames_ = file.size() + prog.size() > 2048;
@@ -283,12 +282,15 @@ void TraceWriter::moveOrigin(const EventOrigin& at, MoveMode mode) {
   moveHead_ += file;
   moveHead_ += ",\"line\":";
   moveHead_.append(kCopySlack, '\0');
-  moveMiddle_ = ",\"prog\":";
-  moveMiddle_ += prog;
-  moveMiddle_ += ",\"mode\":\"";
-  moveMiddle_ += moveModeName(mode);
-  moveMiddle_ += "\",\"start\":";
-  moveMiddle_.append(kCopySlack, '\0');
+  for (MoveMode mode : {MoveMode::Rapid, MoveMode::Linear, MoveMode::Cw, MoveMode::Ccw}) {
+    std::string& s = moveMiddle_[static_cast<int>(mode)];
+    s = ",\"prog\":";
+    s += prog;
+    s += ",\"mode\":\"";
+    s += moveModeName(mode);
+    s += "\",\"start\":";
+    s.append(kCopySlack, '\0');
+  }
 }
 
 // Moves mostly come from consecutive lines: the last text plus one, when its last digit is
@@ -357,9 +359,9 @@ inline char* TraceWriter::movePositions(char* p, const MoveEvent& e, int n) {
 void TraceWriter::onMove(const MoveEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   const std::string* const program = e.at.programName;
-  if (e.at.file != moveFile_ || e.mode != moveMode_ ||
+  if (e.at.file != moveFile_ ||
       (program ? !moveHasProgram_ || !sameText(*program, moveProgram_) : moveHasProgram_))
-    moveOrigin(e.at, e.mode);
+    moveOrigin(e.at);
   char* p;
   if (!moveLongNames_) {
     p = room(kLineBytes + kCopySlack);
@@ -367,8 +369,9 @@ void TraceWriter::onMove(const MoveEvent& e) {
     copyText(p, moveHead_.data(), headLen);
     p = put(lineNumber(p + headLen, e.at.line), ",\"n\":");
     p = e.at.n >= 0 ? formatInt(p, e.at.n) : put(p, "null");
-    const size_t middleLen = moveMiddle_.size() - kCopySlack;
-    copyText(p, moveMiddle_.data(), middleLen);
+    const std::string& middle = moveMiddle_[static_cast<int>(e.mode) & 3];
+    const size_t middleLen = middle.size() - kCopySlack;
+    copyText(p, middle.data(), middleLen);
     p += middleLen;
   } else {  // very long names: the general (slower) way
     begin("move", e.at);

@@ -71,9 +71,10 @@ class TraceWriter final : public EventSink {
   std::string_view programName(const std::string& name);
   // A move's line is written straight into the buffer. Its head is made of two texts kept
   // from the moves before: `{"type":"move","file":F,"line":`, then the line number and N,
-  // then `,"prog":P,"mode":"M","start":`. moveOrigin() writes them again when F, P or M is
-  // not the last move's (compared inline: the same file id, mode and program text).
-  [[gnu::noinline]] void moveOrigin(const EventOrigin& at, MoveMode mode);
+  // then `,"prog":P,"mode":"M","start":` (one text for each of the four modes: the mode
+  // changes often, the program seldom). moveOrigin() writes them again when F or P is not
+  // the last move's (compared inline: the same file id and program text).
+  [[gnu::noinline]] void moveOrigin(const EventOrigin& at);
   char* lineNumber(char* p, uint32_t line);
   // The text of an axis array stays in the buffer until it is flushed: a move starts where
   // the last one ended, so its start is usually the text of that end again, and without
@@ -107,12 +108,12 @@ class TraceWriter final : public EventSink {
   bool full_ = false;  // the limit was passed (and thrown once)
   std::vector<std::string> escapedNames_;
   std::string lastProgram_, lastProgramEscaped_;  // programName(): the last one escaped
-  // moveOrigin(): the last move's file, program and mode, and its texts with kCopySlack.
+  // moveOrigin(): the last move's file and program, and its texts with kCopySlack.
   uint32_t moveFile_ = ~uint32_t{0};  // none yet
-  MoveMode moveMode_ = MoveMode::Linear;
   bool moveHasProgram_ = false;
   bool moveLongNames_ = false;  // over 2048 bytes: begin() writes the head
-  std::string moveProgram_, moveHead_, moveMiddle_;
+  std::string moveProgram_, moveHead_;
+  std::string moveMiddle_[4];  // by MoveMode
   AxesText lastEnd_, lastMend_;
   uint32_t lastLine_ = 0;  // the last move's line and its text
   size_t lineLen_ = 0;
