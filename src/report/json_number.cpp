@@ -46,7 +46,7 @@ inline void put2(char* p, uint32_t d) {
   return end;
 }
 
-// Most integer parts of a trace number are below 100: one or two digits, inline.
+// Most integer parts of a trace number are below 1000: up to three digits, inline.
 inline char* writeUnsigned(char* out, uint64_t u) {
   if (u < 10) {
     *out = static_cast<char>('0' + u);
@@ -55,6 +55,12 @@ inline char* writeUnsigned(char* out, uint64_t u) {
   if (u < 100) {
     put2(out, static_cast<uint32_t>(u));
     return out + 2;
+  }
+  if (u < 1000) {  // X and Y often reach hundreds of millimetres
+    const auto hundreds = static_cast<uint32_t>(u / 100);
+    *out = static_cast<char>('0' + hundreds);
+    put2(out + 1, static_cast<uint32_t>(u) - hundreds * 100);
+    return out + 3;
   }
   return writeLongUnsigned(out, u);
 }
@@ -67,36 +73,47 @@ inline char* writeUnsigned(char* out, uint64_t u) {
 constexpr int kFixedBits = 57;
 constexpr uint64_t kFixedMask = (uint64_t{1} << kFixedBits) - 1;
 
-inline uint64_t nextPair(char* p, uint64_t y) {
+// The next pair of digits, as two bytes '0'..'9' (the first in the low byte).
+inline uint64_t nextPair(uint64_t& y) {
   y = (y & kFixedMask) * 100;
-  put2(p, static_cast<uint32_t>(y >> kFixedBits));
-  return y;
+  uint16_t pair;
+  std::memcpy(&pair, kDigits2 + (y >> kFixedBits) * 2, 2);
+  return pair;
 }
 
-// ".ddd" for a fraction 0 < frac < 10^6 (6 digits) with its trailing zeros dropped. All six
-// digits are written, then the end moves back over the zeros: fewer steps than counting them.
+// Stores the digits of `text` (little-endian: the first in the low byte, all eight bytes
+// stored) and returns the end without the trailing zeros: the last digit that is not '0'
+// is the highest byte of text ^ '0'... that is not zero (one must be).
+inline char* putWithoutZeros(char* p, uint64_t text, uint64_t zeros) {
+  std::memcpy(p, &text, 8);
+  return p + 8 - (std::countl_zero(text ^ zeros) >> 3);
+}
+
+// ".ddd" for a fraction 0 < frac < 10^6 (6 digits) with its trailing zeros dropped: three
+// pairs in one word, stored at once (two bytes more are stored past them).
 inline char* writeFraction6(char* out, uint32_t frac) {
   *out = '.';
   // ceil(2^57 / 10^4): y >> 57 is frac / 10^4, the first pair.
   uint64_t y = frac * uint64_t{14411518807586};
-  put2(out + 1, static_cast<uint32_t>(y >> kFixedBits));
-  y = nextPair(out + 3, y);
-  nextPair(out + 5, y);
-  char* end = out + 7;
-  while (end[-1] == '0') --end;
-  return end;
+  uint16_t first;
+  std::memcpy(&first, kDigits2 + (y >> kFixedBits) * 2, 2);
+  uint64_t text = first;
+  text |= nextPair(y) << 16;
+  text |= nextPair(y) << 32;
+  return putWithoutZeros(out + 1, text, 0x0000303030303030ULL);
 }
 
-// The same for 0 < frac < 10^9 (9 digits: one, then four pairs).
+// The same for 0 < frac < 10^9 (9 digits: one, then four pairs), stored one by one: a
+// length or a time seldom ends in zeros, so the loop over them is cheaper than a word's.
 inline char* writeFraction9(char* out, uint32_t frac) {
   *out = '.';
   // ceil(2^57 / 10^8): y >> 57 is frac / 10^8, the first digit.
   uint64_t y = frac * uint64_t{1441151881};
   out[1] = static_cast<char>('0' + (y >> kFixedBits));
-  y = nextPair(out + 2, y);
-  y = nextPair(out + 4, y);
-  y = nextPair(out + 6, y);
-  nextPair(out + 8, y);
+  for (int k = 2; k < 10; k += 2) {
+    const uint64_t pair = nextPair(y);
+    std::memcpy(out + k, &pair, 2);
+  }
   char* end = out + 10;
   while (end[-1] == '0') --end;
   return end;
@@ -128,8 +145,9 @@ char* formatDouble(char* out, double v) {
     uint64_t mag = n < 0 ? ~static_cast<uint64_t>(n) + 1 : static_cast<uint64_t>(n);
     if (static_cast<double>(n) / 1e6 == v && (mag >= 100 || (n == 0 && !std::signbit(v)))) {
       if (n < 0) *out++ = '-';
-      out = writeUnsigned(out, mag / 1000000);
-      const auto frac = static_cast<uint32_t>(mag % 1000000);
+      const uint64_t whole = mag / 1000000;
+      const auto frac = static_cast<uint32_t>(mag - whole * 1000000);
+      out = writeUnsigned(out, whole);
       return frac != 0 ? writeFraction6(out, frac) : out;
     }
   }
@@ -161,8 +179,9 @@ char* formatFixed(char* out, double v) {
     return out + 1;
   }
   if (v < 0) *out++ = '-';
-  out = writeUnsigned(out, q / 1000000000);
-  const auto frac = static_cast<uint32_t>(q % 1000000000);
+  const uint64_t whole = q / 1000000000;
+  const auto frac = static_cast<uint32_t>(q - whole * 1000000000);
+  out = writeUnsigned(out, whole);
   return frac != 0 ? writeFraction9(out, frac) : out;
 }
 

@@ -7,6 +7,7 @@
 namespace ncvm {
 
 // Room for any double or int64 this writes ("-2.2250738585072014e-308" is 24 characters).
+// The writers may store bytes past the end they return, never past out + kNumberChars.
 constexpr int kNumberChars = 32;
 
 // Writes v as fmt::format("{}", v) would and returns the end. Positions are whole

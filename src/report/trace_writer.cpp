@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -25,7 +26,6 @@ const char* moveModeName(MoveMode m) {
 }
 
 namespace {
-constexpr size_t kChunk = 1 << 20;
 
 // The same program name as the last one: compared inline, as the names are short.
 // Eight bytes at a time, the last (overlapping) step ending at the end; shorter names four
@@ -116,7 +116,7 @@ void escapeInto(std::string& out, std::string_view s) {
 
 TraceWriter::TraceWriter(const SourceFiles& files, std::FILE* out, uint64_t maxBytes, int axes)
     : files_(files), out_(out), maxBytes_(maxBytes), axes_(axes) {
-  buf_.reserve(out ? kChunk + 4096 : 4096);
+  grow(out ? kChunk + kLineBytes + 2 * kCopySlack : 4096);
 }
 
 TraceWriter::~TraceWriter() {
@@ -126,12 +126,29 @@ TraceWriter::~TraceWriter() {
   }
 }
 
+// Doubling: in memory (out == nullptr) the trace only grows; with a file, once.
+void TraceWriter::grow(size_t n) {
+  const size_t cap = std::max(2 * cap_, used_ + n);
+  auto bigger = std::make_unique_for_overwrite<char[]>(cap);
+  if (used_) std::memcpy(bigger.get(), buf_.get(), used_);  // the cached texts' offsets stay
+  buf_ = std::move(bigger);
+  cap_ = cap;
+}
+
+const std::string& TraceWriter::buffer() const {
+  text_.assign(buf_.get(), used_);
+  return text_;
+}
+
 void TraceWriter::flush() {
-  if (!out_ || buf_.empty()) return;
-  if (std::fwrite(buf_.data(), 1, buf_.size(), out_) != buf_.size())
+  if (!out_ || used_ == 0) return;
+  if (std::fwrite(buf_.get(), 1, used_, out_) != used_)
     throw AlarmError(AlarmId::OutputError, "trace");
-  written_ += buf_.size();
-  buf_.clear();
+  written_ += used_;
+  used_ = 0;
+  // The next lines overwrite the texts the next move could have copied.
+  lastEnd_.len = 0;
+  lastMend_.len = 0;
 }
 
 // The escaped names are kept with kCopySlack bytes after them, for copyText.
@@ -159,32 +176,40 @@ std::string_view TraceWriter::programName(const std::string& name) {
 }
 
 void TraceWriter::begin(const char* type, const EventOrigin& at) {
-  buf_ += "{\"type\":\"";
-  buf_ += type;
-  buf_ += "\",\"file\":";
-  buf_ += fileName(at.file);
-  buf_ += ",\"line\":";
+  ev_.clear();
+  ev_ += "{\"type\":\"";
+  ev_ += type;
+  ev_ += "\",\"file\":";
+  ev_ += fileName(at.file);
+  ev_ += ",\"line\":";
   number(static_cast<int64_t>(at.line));
-  buf_ += ",\"n\":";
+  ev_ += ",\"n\":";
   if (at.n >= 0)
     number(static_cast<int64_t>(at.n));
   else
-    buf_ += "null";
-  buf_ += ",\"prog\":";
+    ev_ += "null";
+  ev_ += ",\"prog\":";
   if (at.programName)
-    buf_ += programName(*at.programName);
+    ev_ += programName(*at.programName);
   else
-    buf_ += "null";
+    ev_ += "null";
+}
+
+void TraceWriter::append(const std::string& s) {
+  char* p = room(s.size());
+  std::memcpy(p, s.data(), s.size());
+  commit(p + s.size());
 }
 
 void TraceWriter::end() {
-  buf_ += "}\n";
+  ev_ += "}\n";
+  append(ev_);
   checkLine();
 }
 
-void TraceWriter::checkLine() {
-  if (buf_.size() >= kChunk && out_) flush();
-  if (written_ + buf_.size() > maxBytes_) {
+void TraceWriter::checkedLine() {
+  if (used_ >= kChunk && out_) flush();
+  if (written_ + used_ > maxBytes_) {
     // The events the control still sends (the moves the time stage held, the alarm's
     // release of a look-ahead) would only throw again: the trace ends with the alarm.
     full_ = true;
@@ -194,16 +219,16 @@ void TraceWriter::checkLine() {
 
 void TraceWriter::number(double v) {
   char tmp[kNumberChars];
-  buf_.append(tmp, static_cast<size_t>(formatDouble(tmp, v) - tmp));
+  ev_.append(tmp, static_cast<size_t>(formatDouble(tmp, v) - tmp));
 }
 
 void TraceWriter::number(int64_t v) {
   char tmp[kNumberChars];
-  buf_.append(tmp, static_cast<size_t>(formatInt(tmp, v) - tmp));
+  ev_.append(tmp, static_cast<size_t>(formatInt(tmp, v) - tmp));
 }
 
 namespace {
-// Writers into a caller's buffer: a move is formatted on the stack and appended once.
+// Writers into a caller's buffer: a move is written straight into the trace's buffer.
 template <size_t N>
 char* put(char* p, const char (&literal)[N]) {
   std::memcpy(p, literal, N - 1);
@@ -236,46 +261,61 @@ bool sameValues(const AxisArray& x, const AxisArray& y, int n) {
 }
 
 // memcpy in 16-byte steps, inline (a call to memcpy costs more than the copy of a short
-// text): it may read and write up to 15 bytes past the end, which lines_' slack allows.
+// text): it may read and write up to 15 bytes past the end, which the slack after every
+// text and the room after the line allow.
 void copyText(char* to, const char* from, size_t len) {
   for (size_t i = 0; i < len; i += 16) std::memcpy(to + i, from + i, 16);
 }
 }  // namespace
 
-// begin("move", at), written into a caller's buffer (the names are at most 2048 bytes,
-// which moveHead's caller checks).
-char* TraceWriter::moveHead(char* p, std::string_view file, std::string_view prog,
-                            const EventOrigin& at) {
-  p = put(p, "{\"type\":\"move\",\"file\":");
-  copyText(p, file.data(), file.size());
-  p = put(p + file.size(), ",\"line\":");
-  // Moves mostly come from consecutive lines: the last text plus one, when its last digit
-  // is not a 9.
-  if (at.line == lastLine_ + 1 && lineLen_ != 0 && lineText_[lineLen_ - 1] != '9') {
+// The texts of a move's head for its file and program (names of at most 2048 bytes
+// together; longer ones are written by begin()).
+void TraceWriter::moveOrigin(const EventOrigin& at) {
+  const std::string_view file = fileName(at.file);
+  const std::string_view prog =
+      at.programName ? programName(*at.programName) : std::string_view("null");
+  moveFile_ = at.file;
+  moveHasProgram_ = at.programName != nullptr;
+  moveProgram_ = at.programName ? *at.programName : std::string();
+  moveLongNames_ = file.size() + prog.size() > 2048;
+  moveHead_ = "{\"type\":\"move\",\"file\":";
+  moveHead_ += file;
+  moveHead_ += ",\"line\":";
+  moveHead_.append(kCopySlack, '\0');
+  for (MoveMode mode : {MoveMode::Rapid, MoveMode::Linear, MoveMode::Cw, MoveMode::Ccw}) {
+    std::string& s = moveMiddle_[static_cast<int>(mode)];
+    s = ",\"prog\":";
+    s += prog;
+    s += ",\"mode\":\"";
+    s += moveModeName(mode);
+    s += "\",\"start\":";
+    s.append(kCopySlack, '\0');
+  }
+}
+
+// Moves mostly come from consecutive lines: the last text plus one, when its last digit is
+// not a 9.
+char* TraceWriter::lineNumber(char* p, uint32_t line) {
+  if (line == lastLine_ + 1 && lineLen_ != 0 && lineText_[lineLen_ - 1] != '9') {
     ++lineText_[lineLen_ - 1];
   } else {
-    lineLen_ = static_cast<size_t>(formatInt(lineText_, static_cast<int64_t>(at.line)) - lineText_);
+    lineLen_ = static_cast<size_t>(formatInt(lineText_, static_cast<int64_t>(line)) - lineText_);
   }
-  lastLine_ = at.line;
+  lastLine_ = line;
   copyText(p, lineText_, lineLen_);
-  p += lineLen_;
-  p = put(p, ",\"n\":");
-  p = at.n >= 0 ? formatInt(p, static_cast<int64_t>(at.n)) : put(p, "null");
-  p = put(p, ",\"prog\":");
-  if (!prog.data()) return put(p, "null");
-  copyText(p, prog.data(), prog.size());
-  return p + prog.size();
+  return p + lineLen_;
 }
 
 // The axis array ("[1.5,2,-3]"), its text taken from `reuse` when that holds the same
 // values, and remembered in `save` for the next use.
-char* TraceWriter::putAxesCached(char* p, const AxisArray& a, int n, const AxesText* reuse,
+inline char* TraceWriter::putAxesCached(char* p, const AxisArray& a, int n, const AxesText* reuse,
                                  AxesText* save) {
-  if (reuse && reuse->text && sameValues(reuse->v, a, n)) {
-    copyText(p, reuse->text, reuse->len);
+  char* const base = buf_.get();
+  if (reuse && reuse->len && sameValues(reuse->v, a, n)) {
+    copyText(p, base + reuse->at, reuse->len);
     if (save) {
       save->v = a;
-      save->text = p;
+      save->at = static_cast<size_t>(p - base);
       save->len = reuse->len;
     }
     return p + reuse->len;
@@ -289,7 +329,7 @@ char* TraceWriter::putAxesCached(char* p, const AxisArray& a, int n, const AxesT
   *p++ = ']';
   if (save) {
     save->v = a;
-    save->text = start;
+    save->at = static_cast<size_t>(start - base);
     save->len = static_cast<size_t>(p - start);
   }
   return p;
@@ -301,35 +341,49 @@ int TraceWriter::reportedAxes() const {
 
 void TraceWriter::axes(const char* key, const AxisArray& a) {
   char tmp[16 + kMaxAxes * (kNumberChars + 1)];
-  buf_.append(tmp, static_cast<size_t>(putAxes(tmp, key, a.data(), reportedAxes()) - tmp));
+  ev_.append(tmp, static_cast<size_t>(putAxes(tmp, key, a.data(), reportedAxes()) - tmp));
 }
 
 void TraceWriter::string(std::string_view s) {
-  escapeInto(buf_, s);
+  escapeInto(ev_, s);
+}
+
+inline char* TraceWriter::movePositions(char* p, const MoveEvent& e, int n) {
+  p = putAxesCached(p, e.start, n, &lastEnd_, nullptr);
+  p = putAxesCached(put(p, ",\"end\":"), e.end, n, nullptr, &lastEnd_);
+  p = putAxesCached(put(p, ",\"mstart\":"), e.mstart, n, &lastMend_, nullptr);
+  // Without offsets the machine end is the work end: the same text again.
+  return putAxesCached(put(p, ",\"mend\":"), e.mend, n, &lastEnd_, &lastMend_);
 }
 
 void TraceWriter::onMove(const MoveEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
-  const std::string_view file = fileName(e.at.file);
-  const std::string_view prog =
-      e.at.programName ? programName(*e.at.programName) : std::string_view{};
-  char* const line = lines_[line_];
-  line_ ^= 1;
-  char* p = line;
-  if (file.size() + prog.size() > 2048)
-    begin("move", e.at);  // very long names: the general (slower) way
-  else
-    p = moveHead(p, file, prog, e.at);
-  p = put(p, ",\"mode\":\"");
-  std::string_view mode = moveModeName(e.mode);
-  std::memcpy(p, mode.data(), mode.size());
-  p += mode.size();
+  const std::string* const program = e.at.programName;
+  if (e.at.file != moveFile_ ||
+      (program ? !moveHasProgram_ || !sameText(*program, moveProgram_) : moveHasProgram_))
+    moveOrigin(e.at);
+  char* p;
+  if (!moveLongNames_) {
+    p = room(kLineBytes + kCopySlack);
+    const size_t headLen = moveHead_.size() - kCopySlack;
+    copyText(p, moveHead_.data(), headLen);
+    p = put(lineNumber(p + headLen, e.at.line), ",\"n\":");
+    p = e.at.n >= 0 ? formatInt(p, e.at.n) : put(p, "null");
+    const std::string& middle = moveMiddle_[static_cast<int>(e.mode) & 3];
+    const size_t middleLen = middle.size() - kCopySlack;
+    copyText(p, middle.data(), middleLen);
+    p += middleLen;
+  } else {  // very long names: the general (slower) way
+    begin("move", e.at);
+    p = room(ev_.size() + kLineBytes + kCopySlack);
+    std::memcpy(p, ev_.data(), ev_.size());
+    p = put(p + ev_.size(), ",\"mode\":\"");
+    std::string_view mode = moveModeName(e.mode);
+    std::memcpy(p, mode.data(), mode.size());
+    p = put(p + mode.size(), "\",\"start\":");
+  }
   const int n = reportedAxes();
-  p = putAxesCached(put(p, "\",\"start\":"), e.start, n, &lastEnd_, nullptr);
-  p = putAxesCached(put(p, ",\"end\":"), e.end, n, nullptr, &lastEnd_);
-  p = putAxesCached(put(p, ",\"mstart\":"), e.mstart, n, &lastMend_, nullptr);
-  // Without offsets the machine end is the work end: the same text again.
-  p = putAxesCached(put(p, ",\"mend\":"), e.mend, n, &lastEnd_, &lastMend_);
+  p = n == 3 ? movePositions(p, e, 3) : movePositions(p, e, n);
   // Feed, length and times with a fixed number of decimals (docs/trace-format.md).
   p = put(p, ",\"feed\":");
   if (feedLen_ == 0 || std::bit_cast<uint64_t>(e.feed) != std::bit_cast<uint64_t>(lastFeed_)) {
@@ -374,42 +428,43 @@ void TraceWriter::onMove(const MoveEvent& e) {
     *p++ = ']';
   }
   p = put(p, "}\n");
-  buf_.append(line, static_cast<size_t>(p - line));
+  commit(p);
   checkLine();
 }
 
 void TraceWriter::onDwell(const DwellEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("dwell", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"time\":{}", e.time);
+  fmt::format_to(std::back_inserter(ev_), ",\"time\":{}", e.time);
   if (e.revolutions > 0)
-    fmt::format_to(std::back_inserter(buf_), ",\"revolutions\":{}", e.revolutions);
+    fmt::format_to(std::back_inserter(ev_), ",\"revolutions\":{}", e.revolutions);
   end();
 }
 
 void TraceWriter::onMessage(const MessageEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("message", e.at);
-  buf_ += ",\"text\":";
+  ev_ += ",\"text\":";
   string(e.text);
-  buf_ += ",\"source\":";
+  ev_ += ",\"source\":";
   string(e.source);
   end();
 }
 
 void TraceWriter::onAlarm(const AlarmEvent& e) {
   begin("alarm", e.at);
-  buf_ += ",\"code\":";
+  ev_ += ",\"code\":";
   string(e.code);
-  buf_ += ",\"text\":";
+  ev_ += ",\"text\":";
   string(e.text);
-  buf_ += "}\n";  // no limit check: the alarm must always be written
+  ev_ += "}\n";
+  append(ev_);  // no limit check: the alarm must always be written
 }
 
 void TraceWriter::onTool(const ToolEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("tool", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"tool\":{},\"change\":{}", e.tool, e.change);
+  fmt::format_to(std::back_inserter(ev_), ",\"tool\":{},\"change\":{}", e.tool, e.change);
   end();
 }
 
@@ -417,7 +472,7 @@ void TraceWriter::onSpindle(const SpindleEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   static const char* dirs[] = {"stop", "cw", "ccw", "orient"};
   begin("spindle", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"dir\":\"{}\",\"rpm\":{}",
+  fmt::format_to(std::back_inserter(ev_), ",\"dir\":\"{}\",\"rpm\":{}",
                  dirs[static_cast<int>(e.dir)], e.rpm);
   end();
 }
@@ -426,32 +481,32 @@ void TraceWriter::onCoolant(const CoolantEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   static const char* states[] = {"off", "flood", "mist"};
   begin("coolant", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"state\":\"{}\"", states[static_cast<int>(e.state)]);
+  fmt::format_to(std::back_inserter(ev_), ",\"state\":\"{}\"", states[static_cast<int>(e.state)]);
   end();
 }
 
 void TraceWriter::onAux(const AuxEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("aux", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"letter\":\"{}\",\"code\":{}", e.letter, e.code);
+  fmt::format_to(std::back_inserter(ev_), ",\"letter\":\"{}\",\"code\":{}", e.letter, e.code);
   end();
 }
 
 void TraceWriter::onOffset(const OffsetEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("offset", e.at);
-  buf_ += ",\"kind\":";
+  ev_ += ",\"kind\":";
   string(e.kind);
-  buf_ += ",\"name\":";
+  ev_ += ",\"name\":";
   string(e.name);
-  fmt::format_to(std::back_inserter(buf_), ",\"axis\":{},\"value\":{}", e.axis, e.value);
+  fmt::format_to(std::back_inserter(ev_), ",\"axis\":{},\"value\":{}", e.axis, e.value);
   end();
 }
 
 void TraceWriter::onSkip(const SkipEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("skip", e.at);
-  fmt::format_to(std::back_inserter(buf_), ",\"hit\":{}", e.hit);
+  fmt::format_to(std::back_inserter(ev_), ",\"hit\":{}", e.hit);
   axes("position", e.position);
   axes("mposition", e.mposition);
   end();

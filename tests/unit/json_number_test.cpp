@@ -153,3 +153,28 @@ TEST(JsonNumber, FixedEdges) {
             fmt::format("{}", std::numeric_limits<double>::infinity()));
   EXPECT_EQ(fixed(std::nan("")), fmt::format("{}", std::nan("")));
 }
+
+// Every six-digit fraction (the word of three pairs and its trailing zeros found at once),
+// with integer parts of one, three (inline) and more digits, both signs; every integer
+// part up to 10^5 (the digit counts and the inline hundreds).
+TEST(JsonNumber, EveryMicrometreFractionAndIntegerPart) {
+  for (int64_t whole : {int64_t{0}, int64_t{7}, int64_t{-123}, int64_t{999}, int64_t{45678}}) {
+    for (int64_t frac = 0; frac < 1000000; ++frac) {
+      const int64_t nm = whole < 0 ? whole * 1000000 - frac : whole * 1000000 + frac;
+      const double v = static_cast<double>(nm) / 1e6;
+      char buf[kNumberChars];
+      const std::string got(buf, formatDouble(buf, v));
+      if (got != fmt::format("{}", v)) {
+        ADD_FAILURE() << got << " for " << nm << " nm";
+        return;
+      }
+    }
+  }
+  for (int64_t v = -1000; v <= 100000; ++v) {
+    char buf[kNumberChars];
+    ASSERT_EQ(std::string(buf, formatInt(buf, v)), fmt::format("{}", v));
+    const double d = static_cast<double>(v) + 0.5;
+    ASSERT_EQ(std::string(buf, formatDouble(buf, d)), fmt::format("{}", d));
+    ASSERT_EQ(std::string(buf, formatFixed(buf, d)), fmt::format("{}", d));
+  }
+}

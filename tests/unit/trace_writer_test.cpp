@@ -153,3 +153,91 @@ TEST(TraceWriter, MoveLinesAsTheReferenceFormatterWritesThem) {
     }
   }
 }
+
+namespace {
+// Moves of three programs in two files: the head's texts (file, program, mode) change
+// between moves, and a coolant event of O0200 comes between a move of O0100 and one of
+// O0200 (the writer's cache of the last program escaped is not the last move's program).
+const char* kMain = R"(O0100
+G90 G21 G17 G94
+G01 X1. Y1. Z0 F100.
+M98 P0200
+G01 X2. Y2.
+N5 G00 X3.
+M98 P0300
+G01 X4. Y4.
+N7 X5.
+N7 X6.
+M30
+O0200
+M08
+G01 X1.5 Y1.5
+G00 Z2.
+M99
+)";
+const char* kOther = R"(O0300
+G01 X3.5 F200.
+G02 X3.5 Y5. R2.
+M09
+G01 X3.6
+M99
+)";
+
+// The moves the writer wrote and the reference's, of the text the writer wrote to `out`
+// (nullptr: its buffer).
+void runSubprograms(std::FILE* out, std::vector<std::string>& written,
+                    std::vector<std::string>& expected, const std::string& extra = "") {
+  Session s(defaultSetup());
+  s.addProgramText(extra.empty() ? kMain : extra, "main.nc");
+  s.addProgramText(kOther, "other.nc");
+  TraceWriter writer(s.files(), out, 1ull << 32, s.setup().reportedAxes());
+  Reference ref(writer, s.files(), s.setup().reportedAxes());
+  Session::Result r = s.run(&ref);
+  EXPECT_TRUE(r.state["alarm"].is_null()) << r.state["alarm"].dump();
+  std::string text = writer.buffer();
+  if (out) {
+    writer.flush();
+    text.clear();
+    std::rewind(out);
+    char chunk[4096];
+    for (size_t got; (got = std::fread(chunk, 1, sizeof chunk, out)) > 0;) text.append(chunk, got);
+  }
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);)
+    if (l.rfind(R"({"type":"move")", 0) == 0) written.push_back(l);
+  expected = ref.moves;
+}
+}  // namespace
+
+TEST(TraceWriter, MoveHeadsFollowFileProgramModeAndN) {
+  std::vector<std::string> written, expected;
+  runSubprograms(nullptr, written, expected);
+  ASSERT_EQ(written.size(), expected.size());
+  ASSERT_EQ(written.size(), 11u);
+  for (size_t i = 0; i < written.size(); ++i) EXPECT_EQ(written[i], expected[i]) << "move " << i;
+  // The case above: O0200's first move follows O0100's move and O0200's coolant event.
+  EXPECT_NE(written[1].find(R"("prog":"O0200")"), std::string::npos) << written[1];
+  EXPECT_NE(written[5].find(R"("file":"other.nc")"), std::string::npos) << written[5];
+}
+
+// More than a chunk (1 MB) of trace to a FILE: lines after a flush are the same as without
+// one, and in memory the buffer grows past its first size with the same text.
+TEST(TraceWriter, SameTextAcrossFlushesAndGrowth) {
+  std::string big = "O0100\nG90 G21 G17 G94\nG01 X0 Y0 Z0 F500.\n";
+  for (int i = 0; i < 8000; ++i)
+    big += fmt::format("X{:.3f} Y{:.3f} Z{}\n", (i % 700) * 0.25, (i % 3) * 1.5, -(i % 2));
+  big += "M30\n";
+  for (bool toFile : {false, true}) {
+    std::FILE* f = toFile ? std::tmpfile() : nullptr;
+    if (toFile) {
+      ASSERT_NE(f, nullptr);
+    }
+    std::vector<std::string> written, expected;
+    runSubprograms(f, written, expected, big);
+    if (f) std::fclose(f);
+    ASSERT_EQ(written.size(), expected.size()) << toFile;
+    ASSERT_EQ(written.size(), 8001u);
+    for (size_t i = 0; i < written.size(); ++i)
+      ASSERT_EQ(written[i], expected[i]) << "move " << i << (toFile ? " (file)" : "");
+  }
+}
