@@ -25,6 +25,7 @@
 #include "report/atomic_file.hpp"
 #include "report/html_report.hpp"
 #include "report/trace_writer.hpp"
+#include "cli/command_line.hpp"
 #include "cli/serve_options.hpp"
 #include "server/safe_path.hpp"
 #include "server/worker.hpp"
@@ -450,16 +451,7 @@ int main(int argc, char** argv) {
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return kExitUsage;
-  }
+  if (const auto status = parseCommandLine(app, argc, argv)) return *status;
   try {
     if (run->parsed() && batch) return batchCommand(runOpts, outs, quiet, jobs);
     if (run->parsed()) return runCommand(runOpts, outs, quiet);
@@ -471,11 +463,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();
     return kExitOk;
-  } catch (const SetupError& e) {
-    fmt::print(stderr, "ncvm: setup error: {}{}\n", e.what(), e.line ? fmt::format(" (line {})", e.line) : "");
-    return kExitUsage;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "ncvm: {}\n", e.what());
-    return kExitUsage;
+    return commandError(e);
   }
 }

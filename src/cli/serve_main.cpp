@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/session.hpp"
+#include "cli/command_line.hpp"
 #include "cli/serve_options.hpp"
 #include "server/safe_path.hpp"
 #include "server/web_server.hpp"
@@ -20,7 +21,6 @@ namespace {
 using namespace ncvm;
 
 constexpr int kExitOk = 0;
-constexpr int kExitUsage = 2;
 
 // A folder beside the executable (../share/ncvm/NAME when installed, ../NAME in a build
 // folder), else `fallback` (the source tree), else nothing; $ENV overrides.
@@ -107,21 +107,10 @@ int main(int argc, char** argv) {
   app.name("ncvm serve");
   ServeOptions opts;
   addServeOptions(&app, opts);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return kExitUsage;
-  }
+  if (const auto status = parseCommandLine(app, argc, argv)) return *status;
   try {
     return serveCommand(opts);
-  } catch (const SetupError& e) {
-    fmt::print(stderr, "ncvm: setup error: {}{}\n", e.what(), e.line ? fmt::format(" (line {})", e.line) : "");
-    return kExitUsage;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "ncvm: {}\n", e.what());
-    return kExitUsage;
+    return commandError(e);
   }
 }

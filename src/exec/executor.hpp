@@ -292,6 +292,7 @@ class Executor {
   // gatherWords for a block that is not kPlainBlock but could be one with its variables read:
   // false, having read nothing, for any other block.
   bool straightVariableWords(const Block& b, const Word* words, StraightWords& w);
+  static StraightWords::Number* numberFor(StraightWords& w, char letter);
   template <bool Arc, bool Rapid>
   bool straightBlock(const StraightWords& w);
   // A G00's time, feed, length and dog-leg corners as rapidMachine computes them (X Y Z only).

@@ -64,6 +64,28 @@ int64_t lowestAllowed(const AxisConfig& a, bool inch) {
 }
 }  // namespace
 
+// Where a straight block keeps the value of its letter X Y Z F I J R (nullptr for another).
+Executor::StraightWords::Number* Executor::numberFor(StraightWords& w, char letter) {
+  switch (letter) {
+    case 'X':
+      return &w.axis[0];
+    case 'Y':
+      return &w.axis[1];
+    case 'Z':
+      return &w.axis[2];
+    case 'F':
+      return &w.feed;
+    case 'I':
+      return &w.i;
+    case 'J':
+      return &w.j;
+    case 'R':
+      return &w.r;
+    default:
+      return nullptr;
+  }
+}
+
 const Executor::StraightAxes& Executor::fillStraightAxes(bool inch) {
   StraightAxes& t = straightAxes_[inch ? 1 : 0];
   const InputUnit unit = inch ? InputUnit::Inch : InputUnit::Mm;
@@ -139,35 +161,12 @@ bool Executor::straightMove(const Block& b, bool modalChecked) {
   } else {
     for (uint32_t k = 0; k < b.nWords; ++k) {
       const Word& wd = words[k];
-      StraightWords::Number* slot = nullptr;
-      switch (wd.letter) {
-        case 'G':
-          w.code = static_cast<int>(wd.value * 10.0);
-          continue;
-        case 'X':
-          slot = &w.axis[0];
-          break;
-        case 'Y':
-          slot = &w.axis[1];
-          break;
-        case 'Z':
-          slot = &w.axis[2];
-          break;
-        case 'F':
-          slot = &w.feed;
-          break;
-        case 'I':
-          slot = &w.i;
-          break;
-        case 'J':
-          slot = &w.j;
-          break;
-        case 'R':
-          slot = &w.r;
-          break;
-        default:
-          return false;  // K: the general path decides what it means
+      if (wd.letter == 'G') {
+        w.code = static_cast<int>(wd.value * 10.0);
+        continue;
       }
+      StraightWords::Number* slot = numberFor(w, wd.letter);
+      if (!slot) return false;  // K: the general path decides what it means
       *slot = StraightWords::Number{wd.value, true, (wd.flags & kHasPoint) != 0};
     }
   }
@@ -237,34 +236,11 @@ bool Executor::straightVariableWords(const Block& b, const Word* words, Straight
       e.col = wd.col;
       throw e;
     }
-    StraightWords::Number* slot = nullptr;
-    switch (wd.letter) {
-      case 'G':
-        w.code = static_cast<int>(v * 10.0);
-        continue;
-      case 'X':
-        slot = &w.axis[0];
-        break;
-      case 'Y':
-        slot = &w.axis[1];
-        break;
-      case 'Z':
-        slot = &w.axis[2];
-        break;
-      case 'F':
-        slot = &w.feed;
-        break;
-      case 'I':
-        slot = &w.i;
-        break;
-      case 'J':
-        slot = &w.j;
-        break;
-      default:
-        slot = &w.r;
-        break;
+    if (wd.letter == 'G') {
+      w.code = static_cast<int>(v * 10.0);
+      continue;
     }
-    *slot = StraightWords::Number{v, true, point};
+    *numberFor(w, wd.letter) = StraightWords::Number{v, true, point};  // a letter checked above
   }
   return true;
 }
