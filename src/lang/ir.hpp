@@ -65,23 +65,19 @@ enum BlockFlags : uint8_t {
   kPlainBlock = 1,
 };
 
-// Letters are 'A'..'Z'; the 30i comma words ,C and ,R are stored as 'c' and 'r'. 12 bytes: a
-// literal needs only `value`, every other kind only `a`, so they share the storage, and the
-// kind and the flags share a byte (a 1,000,000-line CAM program holds 3,000,000 words, and
-// every new page of them is one the kernel clears: docs/performance.md). Packed to a 4-byte
-// alignment: `value` sits at offset 4, which x86-64 loads without a penalty except where it
-// crosses a cache line (one word in sixteen).
-struct __attribute__((packed, aligned(4))) Word {
+// Letters are 'A'..'Z'; the 30i comma words ,C and ,R are stored as 'c' and 'r'. 16 bytes: a
+// literal needs only `value`, every other kind only `a`, so they share the storage (a
+// 1,000,000-line CAM program holds 3,000,000 words).
+struct Word {
   char letter = 0;
-  WordKind kind : 4 = WordKind::Literal;
-  uint8_t flags : 4 = 0;
+  WordKind kind = WordKind::Literal;
+  uint8_t flags = 0;
   uint16_t col = 0;
-  union __attribute__((packed)) {
+  union {
     double value = 0.0;  // Literal
     int32_t a;           // Var/NegVar: variable number; Expr: expression index; '<': string
   };
 };
-static_assert(sizeof(Word) == 12);
 
 enum class BlockKind : uint8_t {
   Empty,    // nothing but N, comments, or a program header

@@ -138,7 +138,7 @@ TEST(Parser, LongNumberFlag) {
   EXPECT_FALSE(w[4].flags & kLongNumber);  // F is not a dimension word
   EXPECT_TRUE(w[5].flags & kLongNumber);   // R123456789
   EXPECT_FALSE(w[6].flags & kLongNumber);  // M
-  static_assert(sizeof(Word) == 12);       // the IR's memory per word
+  static_assert(sizeof(Word) == 16);       // the IR's memory per word
   static_assert(sizeof(Block) <= 36);     // and per block
 }
 
