@@ -6,13 +6,11 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <thread>
 #include <unistd.h>
 
@@ -20,14 +18,13 @@
 #include "app/machine_state.hpp"
 #include "app/session.hpp"
 #include "app/sweep.hpp"
+#include "cli/command_line.hpp"
+#include "cli/serve_options.hpp"
 #include "core/alarm.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
 #include "report/html_report.hpp"
 #include "report/trace_writer.hpp"
-#include "cli/command_line.hpp"
-#include "cli/serve_options.hpp"
-#include "server/safe_path.hpp"
 #include "server/worker.hpp"
 
 namespace {
@@ -364,7 +361,7 @@ void printCodeTable() {
 
 // `ncvm serve` runs ncvm-serve beside this binary with the same arguments: the web server
 // and its HTTP library (with OpenSSL and brotli) live there, so that every other command
-// starts without loading them (about 2.7 ms of CPU a start, docs/performance.md).
+// starts without loading them (about 5 ms of CPU a start, docs/performance.md).
 int startServer(int argc, char** argv) {
   namespace fs = std::filesystem;
   std::error_code ec;

@@ -234,7 +234,7 @@ class Executor {
   // nc_block.cpp
   // An NC block the straight path (straightMove) did not take.
   void execNcGeneral(const Block& b);
-  bool plainMotion(Words& w);  // execNc's fast path for plain G00-G03 blocks
+  bool plainMotion(Words& w);  // execNcGeneral's fast path for plain G00-G03 blocks
   void gatherWords(const Block& b, Words& w);
   void gatherPlainWords(const Block& b, Words& w) const;  // a kPlainBlock block's words
   void checkDigits(const Word& wd, bool macroCall) const;  // PS0003 for a kLongNumber word
@@ -270,11 +270,11 @@ class Executor {
     AxisArray mend{}, end{};
   };
   LastEmit lastEmit_;
-  // The straight path for plain G00/G01 blocks and G17 arcs (straight_move.cpp) and what it keeps between
-  // blocks: the stroke limits as nanometre bounds per unit (the same test as checkStroke's)
-  // and the one event it fills in place.
-  // modalChecked: the block before was a straight move in this run, so the modal state still
-  // passes the test (a straight block changes only its motion group, feed and position).
+  // The straight path for plain G00/G01 blocks and G17 arcs (straight_move.cpp) and what it
+  // keeps between blocks: the stroke limits as nanometre bounds per unit (the same test as
+  // checkStroke's) and the one event it fills in place.
+  // modalChecked: the block before was a straight move (straightRun), so the modal state
+  // still passes the test (a straight block changes only its motion group, feed and position).
   bool straightMove(const Block& b, bool modalChecked = false);
   // What straightMove read of the block's words: literal values, or those of #variables and
   // expressions as gatherWords reads them (a vacant variable drops its word; a value counts

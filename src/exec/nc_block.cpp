@@ -221,7 +221,7 @@ void Executor::deriveModal() {
 
 // A block of nothing but G00/G01/G02/G03 and X Y Z F I J K R words on a mill, with no
 // cutter compensation, transform, polar coordinates (G16), canned cycle, modal call (G66), corner word (,C/,R) or
-// code call of its G code in effect: of execNc's generic order only the modal G code, F and
+// code call of its G code in effect: of execNcGeneral's generic order only the modal G code, F and
 // the move do anything, so they run here without the walk through every other word and
 // mode (the bulk of a CAM program). Returns false, having changed nothing, for any other
 // block.

@@ -16,6 +16,7 @@
 
 #include "exec/executor.hpp"
 #include "exec/straight_path.hpp"
+#include "lang/address_letters.hpp"
 #include "motion/cutter_comp.hpp"
 
 namespace ncvm {
@@ -202,10 +203,7 @@ bool Executor::straightMove(const Block& b, bool modalChecked) {
 // in block order, with gatherWords' range alarm. Reading a variable or an expression changes
 // nothing, so when the general path runs the block after all it reads the same.
 bool Executor::straightVariableWords(const Block& b, const Word* words, StraightWords& w) {
-  constexpr uint32_t kLetters = (1u << ('G' - 'A')) | (1u << ('X' - 'A')) |
-                                (1u << ('Y' - 'A')) | (1u << ('Z' - 'A')) |
-                                (1u << ('F' - 'A')) | (1u << ('I' - 'A')) |
-                                (1u << ('J' - 'A')) | (1u << ('R' - 'A'));
+  constexpr uint32_t kLetters = letters::mask("GXYZFIJR");
   uint32_t seen = 0;
   for (uint32_t k = 0; k < b.nWords; ++k) {
     const Word& wd = words[k];
@@ -213,13 +211,8 @@ bool Executor::straightVariableWords(const Block& b, const Word* words, Straight
     const uint32_t bit = 1u << (wd.letter - 'A');
     if (!(bit & kLetters) || (seen & bit)) return false;  // a repeated letter: the general path
     seen |= bit;
-    if (wd.kind == WordKind::Literal) {
-      if (wd.flags & kLongNumber) return false;  // the digit-count check
-      if (wd.letter == 'G' && !(wd.value == 0 || wd.value == 1 || wd.value == 2 || wd.value == 3))
-        return false;
-    } else if (wd.letter == 'G') {
-      return false;
-    }
+    // A literal as in a plain block (G00-G03, no digit-count check); no G#1.
+    if (wd.kind == WordKind::Literal ? !letters::plainWord(wd) : wd.letter == 'G') return false;
   }
   for (uint32_t k = 0; k < b.nWords; ++k) {
     const Word& wd = words[k];
