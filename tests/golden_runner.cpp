@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -243,6 +245,50 @@ TEST_P(Golden, Run) {
     EXPECT_TRUE(near(got, want, tol, why)) << "got " << got.dump() << ", want " << want.dump() << " (" << why
                                            << ")";
   }
+}
+
+// The same case with its main program streamed (program_stream.hpp: compiled in pieces of
+// 61 bytes while it runs, whatever its size): the trace and the state must be the same bytes
+// as the whole program's. Programs the stream scan refuses are compiled whole both times.
+TEST_P(Golden, StreamedRunIsTheSame) {
+  const GoldenCase& c = GetParam();
+  fs::path program = fs::path(c.expect).replace_extension(".nc");
+  fs::path setupFile = fs::path(c.expect).replace_extension(".toml");
+  fs::path lib = fs::path(c.expect).replace_extension(".lib");
+  std::vector<std::string> sets;
+  {
+    std::istringstream in(readFile(c.expect));
+    std::string line;
+    while (std::getline(in, line)) {
+      line = trim(line);
+      if (line.rfind("mode:", 0) == 0 && trim(line.substr(5)) == "check") GTEST_SKIP() << "check mode";
+      if (line.rfind("set:", 0) == 0) sets.push_back(trim(line.substr(4)));
+    }
+  }
+  auto runOnce = [&](bool stream, bool& streamed) {
+    ncvm::Setup setup = fs::exists(setupFile) ? ncvm::loadSetup(setupFile.string()) : ncvm::defaultSetup();
+    for (const auto& s : sets) ncvm::applySetting(setup, s);
+    ncvm::Session session(setup);
+    if (stream) session.streamMainProgram({0, 61});
+    session.addProgramFile(program.string());
+    streamed = session.main() && session.main()->stream;
+    std::vector<fs::path> others;
+    for (const auto& e : fs::directory_iterator(program.parent_path()))
+      if (e.path().extension() == ".nc" && e.path() != program) others.push_back(e.path());
+    std::sort(others.begin(), others.end());
+    for (const auto& o : others) session.store().addFile(o.string());
+    if (fs::is_directory(lib)) session.addLibrary(lib.string());
+    session.addBundledMacros();
+    if (session.setup().stock.present) session.simulateStock("");
+    ncvm::TraceWriter writer(session.files(), nullptr, 1ull << 30, session.setup().reportedAxes());
+    auto r = session.run(&writer);
+    return writer.buffer() + "\n" + r.state.dump(1) + "\n" + r.printed;
+  };
+  bool streamed = false, unused = false;
+  const std::string whole = runOnce(false, unused);
+  const std::string piecewise = runOnce(true, streamed);
+  if (std::getenv("NCVM_SHOW_STREAMED") && streamed) std::printf("streamed: %s\n", c.name.c_str());
+  EXPECT_EQ(whole, piecewise) << (streamed ? "streamed" : "not streamed");
 }
 
 INSTANTIATE_TEST_SUITE_P(All, Golden, ::testing::ValuesIn(findCases()),

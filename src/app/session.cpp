@@ -44,7 +44,7 @@ Session::Session(Setup setup)
     : setup_(std::move(setup)), store_(files_, parseOptionsFor(setup_), setup_.limits.maxFileBytes) {}
 
 void Session::addProgramFile(const std::string& path) {
-  auto progs = store_.addFile(path);
+  auto progs = store_.addFile(path, !main_ && stream_ ? &*stream_ : nullptr);
   if (!main_ && !progs.empty()) main_ = progs.front();
   ownPrograms_.insert(ownPrograms_.end(), progs.begin(), progs.end());
 }
@@ -134,7 +134,9 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
       if (p.blocks.empty()) continue;
       const SourceLoc& last = p.blocks.back().loc;
       if (last.file >= lines.size()) lines.resize(last.file + 1);
-      lines[last.file] = std::max(lines[last.file], last.line);
+      // A streamed program holds one piece: its file's line count stands for its last block.
+      const uint32_t lastLine = p.stream ? p.stream->lineBound() : last.line;
+      lines[last.file] = std::max(lines[last.file], lastLine);
     }
     stage->setLineCounts(std::move(lines));
   }
@@ -152,6 +154,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     both.add(first);
     first = &both;
   }
+  store_.rewindStreams();  // a streamed main program starts at its first piece again
   Executor exec(setup_, store_, *first);
   std::unique_ptr<StockProbe> stockProbe;
   if (setup_.probe.useStock) {
@@ -214,6 +217,14 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     auto lineOrigin = [this](uint32_t file, uint32_t line, const std::string*& program,
                              int32_t& n) {
       for (const Program& p : store_.programs()) {
+        if (p.stream) {  // only its last piece is compiled: the N comes from the file
+          if (p.blocks.empty() || p.blocks.front().loc.file != file || line < p.stream->firstLine() ||
+              line > p.stream->lineBound())
+            continue;
+          program = &p.label;
+          n = p.stream->sequenceAt(line);
+          return;
+        }
         if (p.blocks.empty() || p.blocks.front().loc.file != file ||
             line < p.blocks.front().loc.line || line > p.blocks.back().loc.line)
           continue;

@@ -27,6 +27,10 @@ class Session {
 
   // The first file's first program is the main program; the others join the store.
   void addProgramFile(const std::string& path);
+  // Lets the main program's file be compiled while it runs (ProgramStore::StreamOptions,
+  // program_stream.hpp) when it is large and plain enough: set before addProgramFile. Only
+  // for run(): check() and the web viewer need the whole program.
+  void streamMainProgram(ProgramStore::StreamOptions options) { stream_ = options; }
   void addProgramText(std::string_view text, const std::string& name);
   void addLibrary(const std::string& dir);
   void addBundledMacros();
@@ -89,6 +93,7 @@ class Session {
   SourceFiles files_;
   ProgramStore store_;
   const Program* main_ = nullptr;
+  std::optional<ProgramStore::StreamOptions> stream_;
   std::vector<const Program*> ownPrograms_;  // from files named on the command line
   bool stockOn_ = false;
   std::string stockOut_;

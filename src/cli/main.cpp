@@ -41,6 +41,8 @@ struct CommonOptions {
   std::vector<std::string> libs;
   std::vector<std::string> sets;
   bool noMacros = false;
+  // run only: the main program's file compiled while it runs (program_stream.hpp)
+  ProgramStore::StreamOptions stream;
 };
 
 void addSetupOptions(CLI::App* cmd, CommonOptions& o);
@@ -104,6 +106,7 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   const std::string& outputPath = outs.output;
   const std::string& machineStatePath = outs.machineState;
   Session session(makeSetup(o));
+  session.streamMainProgram(o.stream);
   loadPrograms(session, o);
   // The report inlines the stock pictures: without --stock-out they are made in a
   // temporary folder that is removed afterwards.
@@ -405,6 +408,12 @@ int main(int argc, char** argv) {
                 "run every PROGRAM file as a program of its own, in parallel; --trace, --state and --output "
                 "then name folders (STEM.jsonl, STEM.json, STEM.txt)");
   run->add_option("-j,--jobs", jobs, "threads for --batch (default: all cores)");
+  run->add_option("--stream-min-bytes", runOpts.stream.minBytes,
+                  "compile a main program file of at least this size while it runs, a piece at a time, "
+                  "when it has no macro statements (default 4194304; docs/performance.md)");
+  run->add_option("--stream-piece-bytes", runOpts.stream.pieceBytes,
+                  "size of those pieces (default 65536)")
+      ->check(CLI::Range(size_t{1}, size_t{1} << 30));
 
   CommonOptions checkOpts;
   bool json = false;

@@ -132,6 +132,8 @@ const std::vector<AlarmInfo>& alarmTable() {
        "ncvm: a G31 touched nothing while probe.miss_alarm is set (a real control ends the move "
        "normally; the option makes a missed probe visible)."},
       {AlarmId::TraceLimit, "TRACE LIMIT REACHED", "ncvm: the trace grew past limits.max_trace_bytes."},
+      {AlarmId::ProgramFileChanged, "PROGRAM FILE CHANGED",
+       "ncvm: a streamed program's file was changed while it ran and ncvm had to read it again."},
   };
   return table;
 }

@@ -85,6 +85,7 @@ enum class AlarmId : uint16_t {
   LineTooLong = 9004,
   ProgramTooLarge = 9005,
   TraceLimit = 9006,
+  ProgramFileChanged = 9007,
   SkipNotReceived = 9010,
 };
 

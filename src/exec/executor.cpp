@@ -1,5 +1,7 @@
 #include "exec/executor.hpp"
 
+#include "lang/program_stream.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -100,7 +102,23 @@ const Program* Executor::findProgram(int32_t number, int32_t nameIdx) {
   return p;
 }
 
+// A streamed program holds only the piece that runs (program_stream.hpp): before anything
+// reaches another block of it, it is compiled whole. Its frames' block indices become indices
+// in the whole program, and block_ the same block there (the piece's arrays stay alive, so a
+// reference to the running block held further up the stack still reads the same words).
+void Executor::wholeProgram(const Program& p) {
+  if (!p.stream) return;
+  const auto window = reinterpret_cast<uintptr_t>(p.blocks.data());
+  const auto windowEnd = window + p.blocks.size() * sizeof(Block);
+  const auto at = reinterpret_cast<uintptr_t>(block_);
+  const uint32_t base = p.stream->materialize();
+  for (Frame& f : frames_)
+    if (f.prog == &p) f.pc += base;
+  if (at >= window && at < windowEnd) block_ = &p.blocks[base + (at - window) / sizeof(Block)];
+}
+
 void Executor::enter(const Program* p, FrameKind kind, int repeats, bool codeCalled) {
+  if (!frames_.empty()) wholeProgram(*p);  // a streamed program called from within itself
   if (!p->structural.empty()) {
     // Loop and label errors are known before the program runs (issue: before any motion).
     // A WHILE the compiler rejected earlier in the program is the cause of an unmatched END
@@ -165,6 +183,7 @@ void Executor::doReturn(int32_t label) {
   if (f.kind == FrameKind::Main) {
     // M99 in a main program starts it again (or jumps to N label); only the block and time
     // limits end such a loop.
+    wholeProgram(*f.prog);
     if (label >= 0) {
       int32_t t = f.prog->findLabel(label, 0);
       if (t < 0) throw AlarmError(AlarmId::SequenceNotFound, "N" + std::to_string(label));
@@ -189,6 +208,7 @@ void Executor::doReturn(int32_t label) {
   frames_.pop_back();
   if (label >= 0) {
     Frame& caller = frames_.back();
+    wholeProgram(*caller.prog);
     int32_t t = caller.prog->findLabel(label, caller.pc);
     if (t < 0) throw AlarmError(AlarmId::SequenceNotFound, "N" + std::to_string(label));
     caller.pc = static_cast<uint32_t>(t);
@@ -197,6 +217,7 @@ void Executor::doReturn(int32_t label) {
 
 void Executor::jumpTo(int32_t label, bool computed) {
   Frame& f = frames_.back();
+  wholeProgram(*f.prog);
   const Block& b = *block_;
   int32_t t = -1;
   if (!computed) {
@@ -275,6 +296,12 @@ bool Executor::step() {
   Frame& f = frames_.back();
   const Program& prog = *f.prog;
   if (f.pc >= prog.blocks.size()) {
+    // A streamed program's next piece (only its main frame gets here: entering it again
+    // makes it whole).
+    if (prog.stream && prog.stream->advance()) {
+      f.pc = 0;
+      return true;
+    }
     if (f.kind == FrameKind::Main) {
       endReason_ = EndReason::Eof;
       return false;

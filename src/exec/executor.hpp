@@ -189,6 +189,7 @@ class Executor {
 
   // ---- run ----
   const Block* block_ = nullptr;
+  void wholeProgram(const Program& p);  // a streamed program compiled whole (executor.cpp)
   std::optional<Alarm> alarm_;
   RunStats stats_;
   std::vector<Warning> warnings_;

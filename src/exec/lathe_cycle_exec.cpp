@@ -77,6 +77,7 @@ double Executor::latheIncrements(const Words& w, char letter) const {
 lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds, uint32_t& lastBlock) {
   const Frame& f = frames_.back();
   const Program& prog = *f.prog;
+  wholeProgram(prog);
   int32_t first = prog.findLabel(ns, f.pc);
   if (first < 0) throw AlarmError(AlarmId::CycleSequenceNotFound, fmt::format("P{}", ns));
   int32_t last = prog.findLabel(nf, static_cast<uint32_t>(first));

@@ -134,6 +134,8 @@ struct Block {
 // 36 bytes: a 1,000,000-line CAM program holds 1,000,000 blocks (the enclosing loop of each,
 // which only programs with loops or GOTOs need, is Program::loopParents).
 
+class ProgramStream;
+
 struct Program {
   int32_t number = -1;    // O number; -1 for a file without O header
   std::string name;       // <name> programs, or the file stem for anonymous ones
@@ -158,6 +160,10 @@ struct Program {
   // resolveStructure, which runs only for a program with a WHILE, END, GOTO or IF block;
   // empty otherwise, when no block has one.
   std::vector<int32_t> loopParents;
+  // Set while the program is streamed (program_stream.hpp): the arrays above then hold only
+  // the piece that runs, from block stream->base() on. The executor moves it on at the end of
+  // a piece and asks for the whole program before it needs any other block.
+  ProgramStream* stream = nullptr;
 
   std::string displayName() const;
   // A block's macro operands; all -1 for a block that has none.

@@ -54,6 +54,17 @@ class Compiler {
       : chunks_(chunks), file_(file), stem_(stem), opt_(opt) {}
 
   ParsedFile run();
+  // Piece by piece (PieceCompiler): compiles the next piece; false at the end of the text.
+  bool nextPiece() {
+    s_ = chunks_.next();
+    if (s_.empty()) return false;
+    compilePiece();
+    return true;
+  }
+  ParsedFile& parsed() { return out_; }
+  void continueInto(Program& p) { prog_ = &p; }
+  bool hasControlFlow() const { return hasControlFlow_; }
+  uint32_t line() const { return line_; }
 
  private:
   // ---- text position -------------------------------------------------------------------
@@ -107,7 +118,12 @@ class Compiler {
     finishProgram();
     out_.programs.emplace_back();
     prog_ = &out_.programs.back();
-    if (out_.programs.size() == 1) {
+    if (out_.programs.size() == 1 && opt_.piecewise) {
+      // A streamed program holds one piece's blocks at a time.
+      const size_t lines = countNewlines(s_) + 1;
+      prog_->blocks.reserve(lines);
+      prog_->words.reserve(lines * 3);
+    } else if (out_.programs.size() == 1) {
       // Most files hold one program: size its arrays from the text once, so a large CAM
       // file is never copied while its arrays grow.
       const size_t lines = chunks_.lineHint();
@@ -1039,6 +1055,20 @@ ParsedFile parseProgramChunks(LineChunks& chunks, uint32_t fileId, std::string_v
                               const ParseOptions& options) {
   return Compiler(chunks, fileId, stem, options).run();
 }
+
+struct PieceCompiler::Impl {
+  Compiler compiler;
+};
+
+PieceCompiler::PieceCompiler(LineChunks& chunks, uint32_t fileId, std::string_view stem,
+                             const ParseOptions& options)
+    : impl_(std::make_unique<Impl>(Impl{Compiler(chunks, fileId, stem, options)})) {}
+PieceCompiler::~PieceCompiler() = default;
+bool PieceCompiler::next() { return impl_->compiler.nextPiece(); }
+ParsedFile& PieceCompiler::parsed() { return impl_->compiler.parsed(); }
+void PieceCompiler::continueInto(Program& p) { impl_->compiler.continueInto(p); }
+bool PieceCompiler::hasControlFlow() const { return impl_->compiler.hasControlFlow(); }
+uint32_t PieceCompiler::line() const { return impl_->compiler.line(); }
 
 void resolveStructure(Program& p) {
   auto structural = [&](const Block& b, AlarmId id, std::string detail) {

@@ -5,6 +5,7 @@
 // reaches it, as on the control, and `ncvm check` lists it. Loop and label errors
 // (Program::structural) are found after the whole program is read, before anything runs.
 #include <cstdint>
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct ParseOptions {
   // Plain lines through the one-pass fast path (fast_block.hpp). Tests turn it off to check
   // that both ways compile every line to the same Program.
   bool fastLines = true;
+  // Compiled one piece at a time with its blocks dropped in between (a streamed program,
+  // program_stream.hpp): the arrays are sized for a piece, not for the file.
+  bool piecewise = false;
 };
 
 struct ParsedFile {
@@ -34,6 +38,24 @@ ParsedFile parseProgramText(std::string_view text, uint32_t fileId, std::string_
 class LineChunks;
 ParsedFile parseProgramChunks(LineChunks& chunks, uint32_t fileId, std::string_view stem,
                               const ParseOptions& options = {});
+
+// The same compiler driven one piece at a time (a streamed program): after the first pieces
+// the caller may move the program out of parsed() and have later pieces compiled into it.
+class PieceCompiler {
+ public:
+  PieceCompiler(LineChunks& chunks, uint32_t fileId, std::string_view stem,
+                const ParseOptions& options);
+  ~PieceCompiler();
+  bool next();  // compiles the next piece; false at the end of the text
+  ParsedFile& parsed();
+  void continueInto(Program& p);
+  bool hasControlFlow() const;  // the open program has a WHILE, END, GOTO or IF block
+  uint32_t line() const;        // lines compiled so far
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // Resolves WHILE/DO/END pairs and literal GOTO targets; fills Program::structural.
 void resolveStructure(Program& program);

@@ -14,11 +14,11 @@ namespace ncvm {
 
 std::vector<const Program*> ProgramStore::addText(std::string_view text, const std::string& name) {
   TextChunks chunks(text);
-  return addChunks(chunks, name);
+  return addChunks(chunks, name, files_.add(name));
 }
 
-std::vector<const Program*> ProgramStore::addChunks(LineChunks& chunks, const std::string& name) {
-  uint32_t id = files_.add(name);
+std::vector<const Program*> ProgramStore::addChunks(LineChunks& chunks, const std::string& name,
+                                                    uint32_t id) {
   std::string stem = std::filesystem::path(name).stem().string();
   ParsedFile parsed = parseProgramChunks(chunks, id, stem, options_);
   std::vector<const Program*> added;
@@ -27,19 +27,32 @@ std::vector<const Program*> ProgramStore::addChunks(LineChunks& chunks, const st
     programs_.push_back(std::move(p));
     const Program* prog = &programs_.back();
     added.push_back(prog);
-    if (prog->number >= 0) {
-      auto [it, fresh] = byNumber_.emplace(prog->number, prog);
-      if (!fresh)
-        warnings_.push_back(fmt::format("{}:{}: {} is also in {}; the first one is used", name,
-                                        prog->loc.line, prog->displayName(),
-                                        files_.name(it->second->loc.file)));
-    }
-    if (!prog->name.empty()) byName_.emplace(prog->name, prog);
+    registerProgram(prog, name);
   }
   return added;
 }
 
+void ProgramStore::registerProgram(const Program* prog, const std::string& name) {
+  if (prog->number >= 0) {
+    auto [it, fresh] = byNumber_.emplace(prog->number, prog);
+    if (!fresh)
+      warnings_.push_back(fmt::format("{}:{}: {} is also in {}; the first one is used", name,
+                                      prog->loc.line, prog->displayName(),
+                                      files_.name(it->second->loc.file)));
+  }
+  if (!prog->name.empty()) byName_.emplace(prog->name, prog);
+}
+
+void ProgramStore::rewindStreams() {
+  for (auto& s : streams_) s->rewind();
+}
+
 std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
+  return addFile(path, nullptr);
+}
+
+std::vector<const Program*> ProgramStore::addFile(const std::string& path,
+                                                  const StreamOptions* stream) {
   std::error_code ec;
   // The same file named twice (on the command line and inside a --lib folder) loads once.
   std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
@@ -50,11 +63,28 @@ std::vector<const Program*> ProgramStore::addFile(const std::string& path) {
   if (size > maxFileBytes_) return addTooLarge(path, size);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(fmt::format("{}: cannot open", path));
+  const uint32_t id = files_.add(path);
+  uint32_t lines = 0;
+  if (stream && size >= stream->minBytes &&
+      ProgramStream::scan(path, size, stream->pieceBytes, lines)) {
+    // Compiled while it runs, a piece at a time (program_stream.hpp).
+    programs_.emplace_back();
+    Program& p = programs_.back();
+    auto s = std::make_unique<ProgramStream>(path, id, std::filesystem::path(path).stem().string(),
+                                             options_, stream->pieceBytes, lines, p);
+    if (s->usable()) {
+      p.label = p.displayName();
+      streams_.push_back(std::move(s));
+      registerProgram(&p, path);
+      return {&p};
+    }
+    programs_.pop_back();
+  }
   // Compiled as it is read, through one reused buffer (line_chunks.hpp): the text is never
   // held whole. Not mmap: a file truncated while it is compiled must not kill the process
   // with SIGBUS. A file that shrank since file_size is compiled as far as it was read.
   StreamChunks chunks(in, size);
-  return addChunks(chunks, path);
+  return addChunks(chunks, path, id);
 }
 
 // A file over limits.max_file_bytes is not read: like a control whose memory is full, it

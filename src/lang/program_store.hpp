@@ -4,6 +4,7 @@
 // name wins; later duplicates are reported as warnings.
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -13,6 +14,7 @@
 #include "core/source.hpp"
 #include "lang/line_chunks.hpp"
 #include "lang/parser.hpp"
+#include "lang/program_stream.hpp"
 
 namespace ncvm {
 
@@ -25,6 +27,15 @@ class ProgramStore {
   // std::runtime_error when the file cannot be read; a file larger than the limit becomes
   // a program that raises PS9005.
   std::vector<const Program*> addFile(const std::string& path);
+  // Streamed loading (program_stream.hpp) for the next addFile(stream = true): files of at
+  // least minBytes that StreamScan accepts, read in pieces of pieceBytes.
+  struct StreamOptions {
+    uint64_t minBytes = uint64_t{4} << 20;
+    size_t pieceBytes = size_t{64} << 10;
+  };
+  std::vector<const Program*> addFile(const std::string& path, const StreamOptions* stream);
+  // Every streamed program back at its first block, for another run.
+  void rewindStreams();
   // Same for text already in memory (tests, the server).
   std::vector<const Program*> addText(std::string_view text, const std::string& name);
   // Every program file in a folder (not recursive), in name order.
@@ -37,7 +48,8 @@ class ProgramStore {
   SourceFiles& files() { return files_; }
 
  private:
-  std::vector<const Program*> addChunks(LineChunks& chunks, const std::string& name);
+  std::vector<const Program*> addChunks(LineChunks& chunks, const std::string& name, uint32_t id);
+  void registerProgram(const Program* prog, const std::string& name);
   std::vector<const Program*> addTooLarge(const std::string& path, uintmax_t size);
 
   SourceFiles& files_;
@@ -48,6 +60,7 @@ class ProgramStore {
   std::unordered_map<std::string, const Program*> byName_;
   std::vector<std::string> warnings_;
   std::unordered_set<std::string> loadedFiles_;
+  std::vector<std::unique_ptr<ProgramStream>> streams_;
 };
 
 }  // namespace ncvm
