@@ -399,8 +399,8 @@ bool Executor::straightBlock(const StraightWords& w) {
     e.plane = 17;
     e.length = std::sqrt(arcLen * arcLen + lin);
     e.time = e.feed > 0 ? e.length / e.feed * 60.0 : 0.0;
-    const int64_t center[kXyz] = {static_cast<int64_t>(std::llround(cu0)),
-                                  static_cast<int64_t>(std::llround(cv0)), start[2]};
+    // roundHalfAway is llround (halves away from zero) without the libm call.
+    const int64_t center[kXyz] = {roundHalfAway(cu0), roundHalfAway(cv0), start[2]};
     for (size_t k = 0; k < kXyz; ++k)
       e.center[k] = static_cast<double>(center[k]) / ax.axis[k].per * ax.axis[k].dia;
   }

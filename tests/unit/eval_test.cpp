@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "app/session.hpp"
 
 using namespace ncvm;
@@ -30,6 +32,35 @@ TEST(Eval, PrecedenceFanucGrouping) {
 TEST(Eval, TrigExactAtQuadrants) {
   EXPECT_DOUBLE_EQ(var("O1\n#100=COS[90]\nM30\n", 100), 0.0);
   EXPECT_EQ(alarmOf("O1\n#100=TAN[90]\nM30\n"), "PS0112");
+}
+
+// Whole angles of any size are reduced exactly (multiples of 90 exact, as above); any other
+// angle is the sine of its radians, the same double as with fmod's reduction.
+TEST(Eval, TrigOfLargeAndFractionalAngles) {
+  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  struct Case {
+    const char* expr;
+    double want;
+  };
+  const Case cases[] = {
+      {"SIN[450]", 1.0},
+      {"SIN[-450]", -1.0},
+      {"COS[-270]", 0.0},
+      {"SIN[36000]", 0.0},
+      {"COS[36180]", -1.0},
+      {"SIN[-630]", 1.0},
+      {"SIN[123456789]", std::sin(123456789.0 * kDeg)},
+      {"SIN[999999999999990]", -1.0},
+      {"SIN[720.5]", std::sin(720.5 * kDeg)},
+      {"COS[359.999]", std::sin(449.999 * kDeg)},
+      {"SIN[-0.36]", std::sin(-0.36 * kDeg)},
+      {"SIN[999999999999990*9]", -1.0},
+      {"SIN[999999999999990*18]", 0.0},  // past 9e15: fmod's reduction
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.expr);
+    EXPECT_EQ(var(std::string("O1\n#100=") + c.expr + "\nM30\n", 100), c.want);
+  }
 }
 
 TEST(Eval, AtanRangeFollowsNat) {
