@@ -9,9 +9,14 @@
 namespace ncvm {
 namespace {
 
-bool isSpace(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-}
+// The compiler's spaces (' ', '\t', '\r', '\f', '\v'): one table load instead of five compares a
+// character.
+constexpr std::array<bool, 256> kSpace = [] {
+  std::array<bool, 256> t{};
+  for (char c : {' ', '\t', '\r', '\f', '\v'}) t[static_cast<unsigned char>(c)] = true;
+  return t;
+}();
+bool isSpace(char c) { return kSpace[static_cast<unsigned char>(c)]; }
 bool isDigit(char c) {
   return static_cast<unsigned>(c - '0') < 10u;
 }
@@ -95,7 +100,8 @@ namespace {
       w.col = static_cast<uint16_t>(at > 0xffff ? 0xffff : at);
       w.value = d.value;
       if (d.hasPoint) w.flags |= kHasPoint;
-      if ((cls & kDimension) && std::fabs(d.value) >= letters::kLongNumberFrom)
+      // 999.99999 or more has at least three integer digits: most CAM numbers need no test.
+      if ((cls & kDimension) && d.intDigits >= 3 && std::fabs(d.value) >= letters::kLongNumberFrom)
         w.flags |= kLongNumber;
       const uint32_t bit = 1u << (letter - 'A');
       repeated |= seen & bit;
