@@ -250,6 +250,8 @@ class Executor {
 
   // motion.cpp
   int64_t lengthNm(double v, bool point, int slot) const;
+  static constexpr int64_t kMaxTravelNm = int64_t{2'000'000'000'000'000'000};
+  static int64_t checkedNm(int64_t increments, int64_t nmPerIncrement);  // PS0003 past kMaxTravelNm
   double toProgramUnits(int64_t nm, int slot, bool diameter) const;
   // Targets of the block's axis words; incremental words count from `base` (default: the
   // current work position).

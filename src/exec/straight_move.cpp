@@ -312,7 +312,7 @@ bool Executor::straightBlock(const StraightWords& w) {
     const StraightAxes::Axis& a = ax.axis[slot];
     const int64_t inc =
         (!wd.point && !dpi_) ? roundHalfAway(wd.v) : roundToIncrements(wd.v, a.perIncrement);
-    return inc * a.nmPerIncrement;
+    return checkedNm(inc, a.nmPerIncrement);
   };
   int64_t start[kXyz], target[kXyz], toM[kXyz];
   for (size_t k = 0; k < kXyz; ++k) {
