@@ -251,7 +251,15 @@ class Executor {
   // motion.cpp
   int64_t lengthNm(double v, bool point, int slot) const;
   static constexpr int64_t kMaxTravelNm = int64_t{2'000'000'000'000'000'000};
-  static int64_t checkedNm(int64_t increments, int64_t nmPerIncrement);  // PS0003 past kMaxTravelNm
+  // Increments to nanometres; PS0003 past kMaxTravelNm (motion.cpp says why).
+  static int64_t checkedNm(int64_t increments, int64_t nmPerIncrement) {
+    int64_t nm = 0;
+    if (__builtin_mul_overflow(increments, nmPerIncrement, &nm) || nm > kMaxTravelNm || nm < -kMaxTravelNm)
+        [[unlikely]]
+      travelAlarm();
+    return nm;
+  }
+  [[noreturn, gnu::cold]] static void travelAlarm();
   double toProgramUnits(int64_t nm, int slot, bool diameter) const;
   // Targets of the block's axis words; incremental words count from `base` (default: the
   // current work position).

@@ -28,15 +28,11 @@ int64_t Executor::lengthNm(double v, bool point, int slot) const {
   return checkedNm(inc, nmPer);
 }
 
-// Increments to nanometres. A variable's value is limited only to 1e12 (PS0111), which in inch
+// checkedNm: increments to nanometres. A variable's value is limited only to 1e12 (PS0111), which in inch
 // or IS-C can be more nanometres than int64 holds: beyond kMaxTravelNm (2,000 km, so that a
 // position, an increment and an offset still add up without overflow) the value is an alarm.
-int64_t Executor::checkedNm(int64_t increments, int64_t nmPerIncrement) {
-  int64_t nm = 0;
-  if (__builtin_mul_overflow(increments, nmPerIncrement, &nm) || nm > kMaxTravelNm || nm < -kMaxTravelNm)
-      [[unlikely]]
-    throw AlarmError(AlarmId::TooManyDigits, "value beyond the range of any machine (2,000 km)");
-  return nm;
+void Executor::travelAlarm() {
+  throw AlarmError(AlarmId::TooManyDigits, "value beyond the range of any machine (2,000 km)");
 }
 
 // A dimension word may have at most 8 digits counted in least increments of the current unit

@@ -229,6 +229,8 @@ bool Executor::straightVariableWords(const Block& b, const Word* words, Straight
       e.col = wd.col;
       throw e;
     }
+    // Beyond a million metres (or inches) lengthNm's range check decides: the general path.
+    if (std::fabs(v) > 1e9) return false;
     if (wd.letter == 'G') {
       w.code = static_cast<int>(v * 10.0);
       continue;
@@ -312,7 +314,9 @@ bool Executor::straightBlock(const StraightWords& w) {
     const StraightAxes::Axis& a = ax.axis[slot];
     const int64_t inc =
         (!wd.point && !dpi_) ? roundHalfAway(wd.v) : roundToIncrements(wd.v, a.perIncrement);
-    return checkedNm(inc, a.nmPerIncrement);
+    // No overflow: a plain literal is below 1000 and straightVariableWords refuses values
+    // past 1e9, far inside lengthNm's bound (checkedNm).
+    return inc * a.nmPerIncrement;
   };
   int64_t start[kXyz], target[kXyz], toM[kXyz];
   for (size_t k = 0; k < kXyz; ++k) {
