@@ -50,7 +50,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   setup.limits.maxLineLength = 1024;
   const size_t piece = 1 + (b & 63);
 
-  static const std::string path = "/tmp/ncvm_fuzz_stream_" + std::to_string(::getpid()) + ".nc";
+  static const std::string path = [] {
+    std::atexit([] {
+      std::remove(("/tmp/ncvm_fuzz_stream_" + std::to_string(::getpid()) + ".nc").c_str());
+    });
+    return "/tmp/ncvm_fuzz_stream_" + std::to_string(::getpid()) + ".nc";
+  }();
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data + 2), static_cast<std::streamsize>(size - 2));
