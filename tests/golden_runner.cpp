@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -131,6 +132,30 @@ std::string readFile(const fs::path& p) {
   return ss.str();
 }
 
+// A case's session as `ncvm run` would load it: the setup (the case's .toml, else the
+// default) with the case's set: lines, the program, every other program in its folder (as --lib
+// would add them), its .lib folder and the bundled macros; a [stock] is simulated (its
+// analysis is state.stock, no files written). `stream` streams the main program in pieces of
+// 61 bytes whatever its size.
+std::unique_ptr<ncvm::Session> caseSession(const fs::path& program, const fs::path& setupFile,
+                                           const fs::path& lib, const std::vector<std::string>& sets,
+                                           bool stream = false) {
+  ncvm::Setup setup = fs::exists(setupFile) ? ncvm::loadSetup(setupFile.string()) : ncvm::defaultSetup();
+  for (const auto& s : sets) ncvm::applySetting(setup, s);
+  auto session = std::make_unique<ncvm::Session>(setup);
+  if (stream) session->streamMainProgram({0, 61});
+  session->addProgramFile(program.string());
+  std::vector<fs::path> others;
+  for (const auto& e : fs::directory_iterator(program.parent_path()))
+    if (e.path().extension() == ".nc" && e.path() != program) others.push_back(e.path());
+  std::sort(others.begin(), others.end());
+  for (const auto& o : others) session->store().addFile(o.string());
+  if (fs::is_directory(lib)) session->addLibrary(lib.string());
+  session->addBundledMacros();
+  if (session->setup().stock.present) session->simulateStock("");
+  return session;
+}
+
 class Golden : public ::testing::TestWithParam<GoldenCase> {};
 
 TEST_P(Golden, Run) {
@@ -157,20 +182,8 @@ TEST_P(Golden, Run) {
     }
   }
 
-  ncvm::Setup setup = fs::exists(setupFile) ? ncvm::loadSetup(setupFile.string()) : ncvm::defaultSetup();
-  for (const auto& s : sets) ncvm::applySetting(setup, s);
-  ncvm::Session session(setup);
-  session.addProgramFile(program.string());
-  // Every other program in the folder joins the store, as --lib would add it.
-  std::vector<fs::path> others;
-  for (const auto& e : fs::directory_iterator(program.parent_path()))
-    if (e.path().extension() == ".nc" && e.path() != program) others.push_back(e.path());
-  std::sort(others.begin(), others.end());
-  for (const auto& o : others) session.store().addFile(o.string());
-  if (fs::is_directory(lib)) session.addLibrary(lib.string());
-  session.addBundledMacros();
-  // A setup with [stock] is simulated; its analysis is state.stock (no files written).
-  if (session.setup().stock.present) session.simulateStock("");
+  std::unique_ptr<ncvm::Session> owned = caseSession(program, setupFile, lib, sets);
+  ncvm::Session& session = *owned;
 
   json state, check, trace = json::array();
   std::string printed;
@@ -266,22 +279,10 @@ TEST_P(Golden, StreamedRunIsTheSame) {
     }
   }
   auto runOnce = [&](bool stream, bool& streamed) {
-    ncvm::Setup setup = fs::exists(setupFile) ? ncvm::loadSetup(setupFile.string()) : ncvm::defaultSetup();
-    for (const auto& s : sets) ncvm::applySetting(setup, s);
-    ncvm::Session session(setup);
-    if (stream) session.streamMainProgram({0, 61});
-    session.addProgramFile(program.string());
-    streamed = session.main() && session.main()->stream;
-    std::vector<fs::path> others;
-    for (const auto& e : fs::directory_iterator(program.parent_path()))
-      if (e.path().extension() == ".nc" && e.path() != program) others.push_back(e.path());
-    std::sort(others.begin(), others.end());
-    for (const auto& o : others) session.store().addFile(o.string());
-    if (fs::is_directory(lib)) session.addLibrary(lib.string());
-    session.addBundledMacros();
-    if (session.setup().stock.present) session.simulateStock("");
-    ncvm::TraceWriter writer(session.files(), nullptr, 1ull << 30, session.setup().reportedAxes());
-    auto r = session.run(&writer);
+    std::unique_ptr<ncvm::Session> session = caseSession(program, setupFile, lib, sets, stream);
+    streamed = session->main() && session->main()->stream;
+    ncvm::TraceWriter writer(session->files(), nullptr, 1ull << 30, session->setup().reportedAxes());
+    auto r = session->run(&writer);
     return writer.buffer() + "\n" + r.state.dump(1) + "\n" + r.printed;
   };
   bool streamed = false, unused = false;

@@ -147,8 +147,10 @@ bool ProgramStream::advance() {
   return false;
 }
 
+bool ProgramStream::unchanged() const { return identityOf(path_) == identity_; }
+
 void ProgramStream::checkUnchanged() const {
-  if (!(identityOf(path_) == identity_))
+  if (!unchanged())
     throw AlarmError(AlarmId::ProgramFileChanged, path_ + " changed while it ran");
 }
 
@@ -183,7 +185,7 @@ void ProgramStream::rewind() {
 int32_t ProgramStream::sequenceAt(uint32_t line) {
   auto it = std::upper_bound(pieces_.begin(), pieces_.end(), line,
                              [](uint32_t l, const Piece& p) { return l < p.firstLine; });
-  if (it == pieces_.begin() || !(identityOf(path_) == identity_)) return -1;
+  if (it == pieces_.begin() || !unchanged()) return -1;
   const Piece& piece = *(it - 1);
   std::ifstream in(path_, std::ios::binary);
   auto buf = std::make_unique_for_overwrite<char[]>(piece.bytes);

@@ -50,7 +50,7 @@ class ProgramStream {
   // Compiles the file whole into the program and detaches the stream (program.stream becomes
   // nullptr); returns the old base(). The current and last pieces' arrays stay valid until the
   // stream is destroyed (the executor is in the middle of one of their blocks). Throws
-  // AlarmError PS9006 when the file changed since it was opened.
+  // AlarmError PS9007 when the file changed since it was opened.
   uint32_t materialize();
   // Back to the first piece for another run; a materialized program stays whole.
   void rewind();
@@ -76,7 +76,8 @@ class ProgramStream {
   static Identity identityOf(const std::string& path);
   void start();
   bool compileNext();  // one more piece into the program; records it
-  void checkUnchanged() const;
+  bool unchanged() const;       // the file is still the one opened (identity_)
+  void checkUnchanged() const;  // PS9007 otherwise
 
   std::string path_;
   uint32_t fileId_;
