@@ -7,15 +7,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "exec/arc_math.hpp"
 #include "exec/executor.hpp"
 #include "exec/words.hpp"
 #include "motion/transform.hpp"
 
 namespace ncvm {
 
-namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-}
+namespace {}
 
 int64_t Executor::lengthNm(double v, bool point, int slot) const {
   auto s = static_cast<size_t>(slot < 0 ? 0 : slot);
@@ -28,8 +27,8 @@ int64_t Executor::lengthNm(double v, bool point, int slot) const {
   return checkedNm(inc, nmPer);
 }
 
-// checkedNm: increments to nanometres. A variable's value is limited only to 1e12 (PS0111), which in inch
-// or IS-C can be more nanometres than int64 holds: beyond kMaxTravelNm (2,000 km, so that a
+// checkedNm: increments to nanometres. A variable's value is limited only to 1e12 (PS0111), which
+// in inch or IS-C can be more nanometres than int64 holds: beyond kMaxTravelNm (2,000 km, so that a
 // position, an increment and an offset still add up without overflow) the value is an alarm.
 void Executor::travelAlarm() {
   throw AlarmError(AlarmId::TooManyDigits, "value beyond the range of any machine (2,000 km)");
@@ -59,8 +58,9 @@ void Executor::checkDigits(const Word& wd, bool macroCall) const {
 
 double Executor::toProgramUnits(int64_t nm, int slot, bool diameter) const {
   const AxisConfig& a = setup_.axes[static_cast<size_t>(slot)];
-  double per = a.rotary ? 1e6 : (modal_.unit == InputUnit::Inch ? static_cast<double>(kNmPerInch)
-                                                                   : static_cast<double>(kNmPerMm));
+  double per = a.rotary ? 1e6
+                        : (modal_.unit == InputUnit::Inch ? static_cast<double>(kNmPerInch)
+                                                          : static_cast<double>(kNmPerMm));
   double v = static_cast<double>(nm) / per;
   return (diameter && a.diameter) ? v * 2.0 : v;
 }
@@ -68,13 +68,15 @@ double Executor::toProgramUnits(int64_t nm, int slot, bool diameter) const {
 AxisArray Executor::workPosition() const {
   AxisArray out{};
   for (int k = 0; k < kMaxAxes; ++k)
-    out[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)] - offset_[static_cast<size_t>(k)], k, true);
+    out[static_cast<size_t>(k)] =
+        toProgramUnits(machine_[static_cast<size_t>(k)] - offset_[static_cast<size_t>(k)], k, true);
   return out;
 }
 
 AxisArray Executor::machinePosition() const {
   AxisArray out{};
-  for (int k = 0; k < kMaxAxes; ++k) out[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
+  for (int k = 0; k < kMaxAxes; ++k)
+    out[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
   return out;
 }
 
@@ -96,7 +98,8 @@ bool Executor::axisTargets(const Words& w, std::array<int64_t, kMaxAxes>& target
       if (!lathe_ && k < 3) named = false;
       if (lathe_ && incL && w.has(incL) && k != 5) named = true;
       if (named || (!lathe_ && w.has(absL) && k >= 3 && absL != 'B')) {
-        AlarmError e(AlarmId::ImproperAddress, fmt::format("{}: the machine has no such axis", w.has(absL) ? absL : incL));
+        AlarmError e(AlarmId::ImproperAddress,
+                     fmt::format("{}: the machine has no such axis", w.has(absL) ? absL : incL));
         e.col = w.col[static_cast<size_t>((w.has(absL) ? absL : incL) - 'A')];
         throw e;
       }
@@ -145,8 +148,10 @@ void Executor::polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& targe
   const double cv = static_cast<double>(base ? (*base)[pa.v] : machine_[pa.v] - offset_[pa.v]);
   const double nowAngle = (cu == 0 && cv == 0) ? 0.0 : std::atan2(cv, cu);
   const bool fromHere = hasRadius && modal_.incremental;
-  const double radius = hasRadius ? static_cast<double>(lengthNm(w.value(radiusL), w.hasPoint(radiusL), static_cast<int>(pa.u)))
-                                  : std::hypot(cu, cv);
+  const double radius = hasRadius
+                            ? static_cast<double>(lengthNm(w.value(radiusL), w.hasPoint(radiusL),
+                                                           static_cast<int>(pa.u)))
+                            : std::hypot(cu, cv);
   double angle = nowAngle;
   if (hasAngle) {
     // Degrees, rounded to the metric least increment (0.001 deg for IS-B) whatever G20/G21
@@ -154,7 +159,8 @@ void Executor::polarTargets(const Words& w, std::array<int64_t, kMaxAxes>& targe
     // a decimal point (and without calculator-type input, 3401#0) the value counts increments.
     const int64_t perDeg = incrementsPerUnit(setup_.increment, InputUnit::Mm);
     const double v = w.value(angleL);
-    const int64_t inc = (!w.hasPoint(angleL) && !dpi_) ? static_cast<int64_t>(std::llround(v)) : roundToIncrements(v, perDeg);
+    const int64_t inc = (!w.hasPoint(angleL) && !dpi_) ? static_cast<int64_t>(std::llround(v))
+                                                       : roundToIncrements(v, perDeg);
     double rad = static_cast<double>(inc) / static_cast<double>(perDeg) * std::numbers::pi / 180.0;
     angle = modal_.incremental ? nowAngle + rad : rad;
   }
@@ -188,7 +194,8 @@ double Executor::effectiveFeed() {
   if (modal_.css) rpm = cssRpmAt(machine_[0]);  // constant surface speed: rpm at the start
   if (rpm <= 0 && !warnedRevFeed_) {
     warnedRevFeed_ = true;
-    warn("W004", "feed per revolution with no spindle speed: the machine would wait; time counted as 0");
+    warn("W004",
+         "feed per revolution with no spindle speed: the machine would wait; time counted as 0");
   }
   return modal_.feed * rpm;
 }
@@ -240,8 +247,10 @@ void Executor::emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromM
   lastEmit_.mend = e.mend;
   lastEmit_.end = e.end;
   ++stats_.moves;
-  if (e.mode == MoveMode::Rapid) stats_.rapidLength += e.length;
-  else stats_.feedLength += e.length;
+  if (e.mode == MoveMode::Rapid)
+    stats_.rapidLength += e.length;
+  else
+    stats_.feedLength += e.length;
   advanceTime(e.time);
   sink().onMove(e);
   if (modal_.css && spindleOn_) {
@@ -297,14 +306,20 @@ void Executor::rapidMachine(const std::array<int64_t, kMaxAxes>& toM, uint32_t m
       AxisArray point{};
       for (int k = 0; k < kMaxAxes; ++k) {
         auto s = static_cast<size_t>(k);
-        int64_t nm = fromM[s] + static_cast<int64_t>(std::llround(at[s] * (setup_.axes[s].rotary ? 1e6 : (modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6))));
+        int64_t nm =
+            fromM[s] +
+            static_cast<int64_t>(std::llround(
+                at[s] *
+                (setup_.axes[s].rotary ? 1e6 : (modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6))));
         point[s] = toProgramUnits(nm - offset_[s], k, true);
       }
       e.path[static_cast<size_t>(e.pathPoints++)] = point;
       prev = at;
     }
     double seg = 0;
-    for (int k = 0; k < kMaxAxes; ++k) seg += (d[static_cast<size_t>(k)] - prev[static_cast<size_t>(k)]) * (d[static_cast<size_t>(k)] - prev[static_cast<size_t>(k)]);
+    for (int k = 0; k < kMaxAxes; ++k)
+      seg += (d[static_cast<size_t>(k)] - prev[static_cast<size_t>(k)]) *
+             (d[static_cast<size_t>(k)] - prev[static_cast<size_t>(k)]);
     e.length = length + std::sqrt(seg);
   } else {
     e.length = std::sqrt(sq);
@@ -313,7 +328,8 @@ void Executor::rapidMachine(const std::array<int64_t, kMaxAxes>& toM, uint32_t m
   machine_ = toM;
 }
 
-void Executor::moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t mask) {
+void Executor::moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode,
+                      uint32_t mask) {
   std::array<int64_t, kMaxAxes> toM;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = targetWork[k] + offset_[k];
   programmed_ = targetWork;
@@ -327,7 +343,8 @@ void Executor::moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode 
   e.feed = effectiveFeed();
   double sq = 0;
   for (int k = 0; k < kMaxAxes; ++k) {
-    double d = toProgramUnits(toM[static_cast<size_t>(k)] - machine_[static_cast<size_t>(k)], k, false);
+    double d =
+        toProgramUnits(toM[static_cast<size_t>(k)] - machine_[static_cast<size_t>(k)], k, false);
     sq += d * d;
   }
   e.length = std::sqrt(sq);
@@ -366,8 +383,9 @@ void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Word
 }
 
 // The centre of an arc block (R or I/J/K) in the plane, work coordinates in nm.
-void Executor::arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std::array<int64_t, kMaxAxes>& targetWork,
-                         const Words& w, bool cw, double& cu0, double& cv0) {
+void Executor::arcCenter(const std::array<int64_t, kMaxAxes>& startW,
+                         const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw,
+                         double& cu0, double& cv0) {
   const PlaneAxes pa = planeAxes(modal_.plane);
   double su = static_cast<double>(startW[pa.u]), sv = static_cast<double>(startW[pa.v]);
   double eu = static_cast<double>(targetWork[pa.u]), ev = static_cast<double>(targetWork[pa.v]);
@@ -377,7 +395,7 @@ void Executor::arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std:
   if (w.has('R')) {
     double r = static_cast<double>(lengthNm(w.value('R'), w.hasPoint('R'), static_cast<int>(pa.u)));
     double du = eu - su, dv = ev - sv;
-    double d = std::hypot(du, dv);
+    double d = planeDistance(du, dv);
     if (d == 0) return;
     double h2 = r * r - d * d / 4.0;
     if (h2 < 0) {
@@ -395,11 +413,13 @@ void Executor::arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std:
   if (!w.has(pa.cu) && !w.has(pa.cv)) throw AlarmError(AlarmId::NoRadiusOrCenter);
   // I, J, K are incremental from the start point and always radius values.
   auto centerNm = [&](char c, size_t axis) {
-    return w.has(c) ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), static_cast<int>(axis))) : 0.0;
+    return w.has(c)
+               ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), static_cast<int>(axis)))
+               : 0.0;
   };
   cu0 = su + centerNm(pa.cu, pa.u);
   cv0 = sv + centerNm(pa.cv, pa.v);
-  double rs = std::hypot(su - cu0, sv - cv0), re = std::hypot(eu - cu0, ev - cv0);
+  double rs = planeDistance(su - cu0, sv - cv0), re = planeDistance(eu - cu0, ev - cv0);
   if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
   if (std::fabs(re - rs) > tolNm)
     throw AlarmError(AlarmId::OverToleranceOfRadius,
@@ -408,20 +428,16 @@ void Executor::arcCenter(const std::array<int64_t, kMaxAxes>& startW, const std:
 
 // An arc from the current position to targetWork around the centre (cu, cv) of the plane
 // (work coordinates, nm); the other axes move linearly (helix).
-void Executor::arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu0, double cv0, bool cw) {
+void Executor::arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu0,
+                             double cv0, bool cw) {
   const PlaneAxes pa = planeAxes(modal_.plane);
   double feed = effectiveFeed();
   std::array<int64_t, kMaxAxes> startW;
   for (size_t k = 0; k < kMaxAxes; ++k) startW[k] = machine_[k] - offset_[k];
   double su = static_cast<double>(startW[pa.u]), sv = static_cast<double>(startW[pa.v]);
   double eu = static_cast<double>(targetWork[pa.u]), ev = static_cast<double>(targetWork[pa.v]);
-  double r = std::hypot(su - cu0, sv - cv0);
-  double as = std::atan2(sv - cv0, su - cu0), ae = std::atan2(ev - cv0, eu - cu0);
-  double sweep = cw ? as - ae : ae - as;
-  bool full = (eu == su && ev == sv);
-  while (sweep <= 0) sweep += kTwoPi;
-  while (sweep > kTwoPi) sweep -= kTwoPi;
-  if (full) sweep = kTwoPi;
+  double r = planeDistance(su - cu0, sv - cv0);
+  double sweep = arcSweep(su, sv, eu, ev, cu0, cv0, cw);
   // Length in program units: the arc and any linear (helical) axes together.
   double unitNm = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
   double arcLen = r * sweep / unitNm;
@@ -442,7 +458,8 @@ void Executor::arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, do
   centerW[pa.u] = static_cast<int64_t>(std::llround(cu0));
   centerW[pa.v] = static_cast<int64_t>(std::llround(cv0));
   centerW[pa.n] = startW[pa.n];
-  for (int k = 0; k < 3; ++k) e.center[static_cast<size_t>(k)] = toProgramUnits(centerW[static_cast<size_t>(k)], k, true);
+  for (int k = 0; k < 3; ++k)
+    e.center[static_cast<size_t>(k)] = toProgramUnits(centerW[static_cast<size_t>(k)], k, true);
   std::array<int64_t, kMaxAxes> toM, fromM = machine_;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = targetWork[k] + offset_[k];
   checkStroke(toM);
@@ -479,7 +496,8 @@ void Executor::dwell(const Words& w) {
 
 void Executor::referenceReturn(const Words& w, int which) {
   if (modal_.g[9] != 800) throw AlarmError(AlarmId::G27to30InCycle);
-  if (which < 1 || which > 4) throw AlarmError(AlarmId::IllegalReferenceReturn, fmt::format("P{}", which));
+  if (which < 1 || which > 4)
+    throw AlarmError(AlarmId::IllegalReferenceReturn, fmt::format("P{}", which));
   std::array<int64_t, kMaxAxes> mid{};
   uint32_t mask = 0;
   axisTargets(w, mid, mask);
@@ -503,7 +521,8 @@ void Executor::referenceReturn(const Words& w, int which) {
 int64_t Executor::referenceNm(size_t k, int which) const {
   const AxisConfig& a = setup_.axes[k];
   const double ref = a.reference[static_cast<size_t>(which - 1)];
-  const int64_t nm = roundToIncrements(ref, incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
+  const int64_t nm =
+      roundToIncrements(ref, incrementsPerUnit(setup_.increment, InputUnit::Mm)) * nmPerIncMm_[k];
   return a.diameter ? nm / 2 : nm;
 }
 
@@ -537,9 +556,11 @@ void Executor::referencePositionCheck(const Words& w) {
     // The machine positions to its detection unit (the metric increment): an inch command
     // 3.937 in = 99.9998 mm reaches a 100.000 mm reference.
     if (std::llabs(machine_[k] - nm) * 2 >= nmPerIncMm_[k])
-      throw AlarmError(AlarmId::ReferenceCheckError,
-                       fmt::format("{} is at {:.4f}, its reference position is {:.4f} (machine, mm)", "XYZABC"[k],
-                                   static_cast<double>(machine_[k]) / 1e6 * (a.diameter ? 2 : 1), a.reference[0]));
+      throw AlarmError(
+          AlarmId::ReferenceCheckError,
+          fmt::format("{} is at {:.4f}, its reference position is {:.4f} (machine, mm)",
+                      "XYZABC"[k], static_cast<double>(machine_[k]) / 1e6 * (a.diameter ? 2 : 1),
+                      a.reference[0]));
   }
 }
 

@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 
+#include "exec/arc_math.hpp"
 #include "exec/executor.hpp"
 #include "exec/straight_path.hpp"
 #include "lang/address_letters.hpp"
@@ -22,7 +23,6 @@
 namespace ncvm {
 
 namespace {
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // The position checkStroke compares with an axis's limits (mm or degrees), in the same
 // arithmetic: program units of the machine position, times 25.4 for a linear axis in inch.
@@ -350,7 +350,8 @@ bool Executor::straightBlock(const StraightWords& w) {
   MoveEvent& e = straight_;
   if constexpr (Arc) {
     double cu0 = 0, cv0 = 0;
-    double radius = -1;  // the start radius, once computed (the same hypot, the same double)
+    double radius =
+        -1;  // the start radius, once computed (the same planeDistance, the same double)
     // arcCenter in G17 (u = X, v = Y): R and I with X's increments, J with Y's.
     const bool cw = motion == 20;
     const double su = static_cast<double>(start[0]), sv = static_cast<double>(start[1]);
@@ -361,7 +362,7 @@ bool Executor::straightBlock(const StraightWords& w) {
     if (wr.given) {
       const double r = static_cast<double>(lengthNmOf(wr, 0));
       const double du = eu - su, dv = ev - sv;
-      const double d = std::hypot(du, dv);
+      const double d = planeDistance(du, dv);
       if (d != 0) {
         double h2 = r * r - d * d / 4.0;
         if (h2 < 0) {
@@ -378,8 +379,8 @@ bool Executor::straightBlock(const StraightWords& w) {
     } else {
       cu0 = su + (wi.given ? static_cast<double>(lengthNmOf(wi, 0)) : 0.0);
       cv0 = sv + (wj.given ? static_cast<double>(lengthNmOf(wj, 1)) : 0.0);
-      const double rs = radius = std::hypot(su - cu0, sv - cv0);
-      const double re = std::hypot(eu - cu0, ev - cv0);
+      const double rs = radius = planeDistance(su - cu0, sv - cv0);
+      const double re = planeDistance(eu - cu0, ev - cv0);
       if (rs == 0) throw AlarmError(AlarmId::OverToleranceOfRadius, "centre on the start point");
       if (std::fabs(re - rs) > tolNm)
         throw AlarmError(AlarmId::OverToleranceOfRadius,
@@ -387,13 +388,8 @@ bool Executor::straightBlock(const StraightWords& w) {
     }
     // arcWithCenter: the feed first, then the sweep and the length.
     e.feed = effectiveFeed();
-    const double r = radius >= 0 ? radius : std::hypot(su - cu0, sv - cv0);
-    const double as = std::atan2(sv - cv0, su - cu0), ae = std::atan2(ev - cv0, eu - cu0);
-    double sweep = cw ? as - ae : ae - as;
-    const bool full = (eu == su && ev == sv);
-    while (sweep <= 0) sweep += kTwoPi;
-    while (sweep > kTwoPi) sweep -= kTwoPi;
-    if (full) sweep = kTwoPi;
+    const double r = radius >= 0 ? radius : planeDistance(su - cu0, sv - cv0);
+    const double sweep = arcSweep(su, sv, eu, ev, cu0, cv0, cw);
     const double unitNm = inch ? 25.4e6 : 1e6;
     const double arcLen = r * sweep / unitNm;
     const double dz = static_cast<double>(target[2] - start[2]) / ax.axis[2].per;
@@ -506,8 +502,10 @@ bool Executor::straightBlock(const StraightWords& w) {
   lastEmit_.valid = true;
   lastEmit_.inch = inch;
   ++stats_.moves;
-  if (rapid) stats_.rapidLength += e.length;
-  else stats_.feedLength += e.length;
+  if (rapid)
+    stats_.rapidLength += e.length;
+  else
+    stats_.feedLength += e.length;
   simTime_ += e.time;  // advanceTime
   stats_.time += e.time;
   realSink_.onMove(e);  // sink(): nothing is deferred without compensation

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "exec/arc_math.hpp"
 #include "exec/executor.hpp"
 #include "exec/words.hpp"
 
@@ -32,7 +33,8 @@ std::array<int64_t, kMaxAxes> Executor::transformed(const std::array<int64_t, kM
   std::array<int64_t, kMaxAxes> out = p;
   for (size_t k = 0; k < 3; ++k) {
     // A scaled point far outside any machine must not overflow the nm counts.
-    if (!(std::fabs(t[k]) < 1e18)) throw AlarmError(AlarmId::FloatOverflow, "transformed position out of range");
+    if (!(std::fabs(t[k]) < 1e18))
+      throw AlarmError(AlarmId::FloatOverflow, "transformed position out of range");
     out[k] = static_cast<int64_t>(std::llround(t[k]));
   }
   return out;
@@ -205,9 +207,9 @@ void Executor::runPlanned(const PlannedMove& m) {
   // cut: the end radius no longer matches (PS0020).
   double su = static_cast<double>(machine_[a.u] - offset_[a.u]),
          sv = static_cast<double>(machine_[a.v] - offset_[a.v]);
-  double rs = std::hypot(su - c[a.u], sv - c[a.v]);
+  double rs = planeDistance(su - c[a.u], sv - c[a.v]);
   double re =
-      std::hypot(static_cast<double>(to[a.u]) - c[a.u], static_cast<double>(to[a.v]) - c[a.v]);
+      planeDistance(static_cast<double>(to[a.u]) - c[a.u], static_cast<double>(to[a.v]) - c[a.v]);
   if (std::fabs(re - rs) > arcTolerance_ * 1e6)
     throw AlarmError(
         AlarmId::OverToleranceOfRadius,
