@@ -14,8 +14,6 @@
 
 namespace ncvm {
 
-namespace {}
-
 int64_t Executor::lengthNm(double v, bool point, int slot) const {
   auto s = static_cast<size_t>(slot < 0 ? 0 : slot);
   bool rotary = setup_.axes[s].rotary;

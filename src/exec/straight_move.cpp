@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "exec/arc_math.hpp"
 #include "exec/executor.hpp"
@@ -350,8 +349,7 @@ bool Executor::straightBlock(const StraightWords& w) {
   MoveEvent& e = straight_;
   if constexpr (Arc) {
     double cu0 = 0, cv0 = 0;
-    double radius =
-        -1;  // the start radius, once computed (the same planeDistance, the same double)
+    double radius = -1;  // the start radius, once computed (the general path's double)
     // arcCenter in G17 (u = X, v = Y): R and I with X's increments, J with Y's.
     const bool cw = motion == 20;
     const double su = static_cast<double>(start[0]), sv = static_cast<double>(start[1]);
