@@ -254,6 +254,21 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   return r;
 }
 
+namespace {
+// A G73 block of the lathe's pattern-repeating cycle: P and Q (the contour's sequence
+// numbers), or U/W (the escape) without a Z; a mill's peck-drilling G73 has a Z.
+bool latheForm(const Word* w, uint32_t n) {
+  bool p = false, q = false, uw = false, z = false;
+  for (uint32_t k = 0; k < n; ++k) {
+    p |= w[k].letter == 'P';
+    q |= w[k].letter == 'Q';
+    uw |= w[k].letter == 'U' || w[k].letter == 'W';
+    z |= w[k].letter == 'Z';
+  }
+  return (p && q) || (uw && !z);
+}
+}  // namespace
+
 nlohmann::json Session::check() const {
   struct Finding {
     bool alarm;
@@ -277,6 +292,10 @@ nlohmann::json Session::check() const {
         // Lathe multiple repetitive cycles take P/Q sequence numbers, R pass counts and
         // P/Q/R in least increments by design (G74-G76): no decimal-point warning there.
         latheCycle |= setup_.kind == MachineKind::Lathe && g >= 700 && g <= 780;
+        // A lathe program checked with a mill setup: G70-G72 are no mill codes (the run
+        // raises PS0010), and a G73 in the lathe form (P and Q, or U/W without Z) is the
+        // pattern-repeating cycle, not peck drilling (whose Q and R are lengths).
+        latheCycle |= g == 700 || g == 710 || g == 720 || (g == 730 && latheForm(w, b.nWords));
       }
       uint32_t seen = 0;
       for (uint32_t k = 0; k < b.nWords; ++k) {
@@ -292,9 +311,15 @@ nlohmann::json Session::check() const {
         bool lengthAddress = std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
         if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P' || wd.letter == 'R')) lengthAddress = false;
         if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) && wd.value != 0) {
+          // Divided, not multiplied, by the increments per unit: 3 / 10000 prints as 0.0003,
+          // 3 * 0.0001 as 0.00030000000000000003 (fmt prints the shortest exact form).
+          const double perMm = setup_.increment == IncrementSystem::IsA   ? 100
+                               : setup_.increment == IncrementSystem::IsC ? 10000
+                                                                          : 1000;
           Alarm a{"W001",
                   fmt::format("{}{} has no decimal point: it means {} least increments ({} mm or {} in), not {}",
-                              wd.letter, wd.value, wd.value, wd.value * 0.001, wd.value * 0.0001, wd.value),
+                              wd.letter, wd.value, wd.value, wd.value / perMm, wd.value / (perMm * 10),
+                              wd.value),
                   SourceLoc{b.loc.file, b.loc.line, wd.col}, std::nullopt, p->number};
           found.push_back({false, a});
         }

@@ -134,6 +134,8 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::TraceLimit, "TRACE LIMIT REACHED", "ncvm: the trace grew past limits.max_trace_bytes."},
       {AlarmId::ProgramFileChanged, "PROGRAM FILE CHANGED",
        "ncvm: a streamed program's file was changed while it ran and ncvm had to read it again."},
+      {AlarmId::NoProgramText, "NO PROGRAM IN FILE",
+       "ncvm: the file holds no program text (empty, only '%', only leader or comments)."},
   };
   return table;
 }

@@ -86,6 +86,7 @@ enum class AlarmId : uint16_t {
   ProgramTooLarge = 9005,
   TraceLimit = 9006,
   ProgramFileChanged = 9007,
+  NoProgramText = 9008,
   SkipNotReceived = 9010,
 };
 

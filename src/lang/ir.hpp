@@ -55,6 +55,9 @@ enum WordFlags : uint8_t {
   // A literal dimension word (X Y Z U V W A B C I J K R Q) of 999.99999 or more: it may have
   // more than 8 digits in increments (PS0003), which the executor checks once the unit is known.
   kLongNumber = 2,
+  // A minus sign on a letter that takes none (P M S T H D L G): PS0006 unless the block is a
+  // G65/G66 macro call, where the letter is a signed argument.
+  kHasMinus = 4,
 };
 
 // Block flags (Block::flags), set by the compiler.

@@ -26,6 +26,20 @@ bool isUpper(char c) { return c >= 'A' && c <= 'Z'; }
 bool isLower(char c) { return c >= 'a' && c <= 'z'; }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+// What may follow the closing '%' without being program text: spaces, and the bytes tape
+// readers and DOS tools add (NUL feed, DEL, SUB = the DOS end-of-file mark 0x1A).
+bool isFiller(char c) { return isSpace(c) || c == '\0' || c == '\x1a' || c == '\x7f'; }
+bool onlyFiller(std::string_view s) {
+  return std::all_of(s.begin(), s.end(), isFiller);
+}
+// A UTF-8 byte-order mark, which editors put at the start of a file: not program text.
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+// A program made of comment blocks only (a title before the O number).
+bool commentsOnly(const Program& p) {
+  return p.errors.empty() && std::all_of(p.blocks.begin(), p.blocks.end(), [](const Block& b) {
+           return b.kind == BlockKind::Empty && b.n < 0 && b.skipLevel == 0;
+         });
+}
 
 using letters::forbidsMinus;
 using letters::forbidsPoint;
@@ -54,6 +68,7 @@ class Compiler {
       : chunks_(chunks), file_(file), stem_(stem), opt_(opt) {}
 
   ParsedFile run();
+  bool onlyComments() const { return prog_ && headerless_ && commentsOnly(*prog_); }
   // Piece by piece (PieceCompiler): compiles the next piece; false at the end of the text.
   bool nextPiece() {
     s_ = chunks_.next();
@@ -86,10 +101,16 @@ class Compiler {
   uint16_t ncWords_ = 0;
   bool sawHeaderComment_ = false;
   bool hasControlFlow_ = false;  // the open program has a WHILE, END, GOTO or IF block
-  // Tape format: the text before the first '%' is leader, skipped when the text has a '%' at
-  // all. Until one is found, what was compiled may yet be leader.
-  bool sawPercent_ = false;
-  bool leaderLine_ = false;  // the next line starts with the first '%'; lineStart_ is set
+  bool headerless_ = false;      // the open program was opened by a block, not by a header
+  bool firstPiece_ = true;
+  // Tape format (F16TB-MC, F30i-DS in docs/fanuc-decisions.md): "%", leader, programs, "%".
+  // The text before the first '%' is leader; the closing '%' ends the text. A text whose only
+  // '%' has nothing after it was the program and its tape end (a file without the leading
+  // '%'): what was compiled before that '%' is kept aside until the end shows which it was.
+  enum class Tape : uint8_t { Before, Inside, Done };
+  Tape tape_ = Tape::Before;
+  ParsedFile leader_;
+  uint32_t firstMarkLine_ = 0;
 
   uint32_t col() const { return static_cast<uint32_t>(i_ - lineStart_ + 1); }
   char peek(size_t k = 0) const { return i_ + k < end_ ? s_[i_ + k] : '\0'; }
@@ -105,7 +126,10 @@ class Compiler {
 
   // ---- programs and blocks --------------------------------------------------------------
   Program& ensureProgram() {
-    if (!prog_) startProgram(-1, std::string(stem_), SourceLoc{file_, line_, 1});
+    if (!prog_) {
+      startProgram(-1, std::string(stem_), SourceLoc{file_, line_, 1});
+      headerless_ = true;
+    }
     return *prog_;
   }
   // Loops and literal GOTOs are resolved once a program is complete; a program without any
@@ -115,6 +139,13 @@ class Compiler {
     hasControlFlow_ = false;
   }
   void startProgram(int32_t number, std::string name, SourceLoc loc) {
+    // Comments before the first header ("%", "(PART NAME)", "O0001") are leader, not a
+    // header-less program that would run instead of O0001.
+    if (onlyComments() && !out_.programs.empty() && prog_ == &out_.programs.back()) {
+      out_.programs.pop_back();
+      prog_ = nullptr;
+    }
+    headerless_ = false;
     finishProgram();
     out_.programs.emplace_back();
     prog_ = &out_.programs.back();
@@ -138,6 +169,10 @@ class Compiler {
     sawHeaderComment_ = false;
   }
   void compilePiece();
+  void finish();
+  void skipUnread(size_t pos);
+  size_t tapeMark(size_t after, size_t e);
+  void addNoProgram();
   void parseLine(size_t b, size_t e);
   void parseBlock(size_t b, size_t e);
   bool parseHeader();
@@ -166,6 +201,13 @@ class Compiler {
   Type parseBracket();
   void parseVarRef();  // after '#'
   bool peekKeyword(const char* kw) const;
+  // Offset of the letter of a ",C"/",R" word at the ',' here: spaces may follow the comma
+  // ("G01 X50., R5.").
+  size_t commaLetter() const {
+    size_t k = 1;
+    while (isSpace(peek(k))) ++k;
+    return k;
+  }
   size_t letterRun() const {
     size_t k = 0;
     while (isUpper(peek(k))) ++k;
@@ -180,42 +222,66 @@ class Compiler {
   }
   double parseNumberText(bool& hasPoint, int& intDigits);
   double parseNumberSlow(bool& hasPoint, int& intDigits);
+  // The last number read has more digits than a double can hold (1 and 309 zeros, or 400
+  // fraction digits): its caller raises PS0003 where it raises its other digit alarms.
+  bool numberTooLong_ = false;
+  bool operatorAt(const char* kw) const;
 };
 
 ParsedFile Compiler::run() {
   for (s_ = chunks_.next(); !s_.empty(); s_ = chunks_.next()) compilePiece();
-  finishProgram();
+  finish();
   return std::move(out_);
+}
+
+void Compiler::finish() {
+  finishProgram();
+  // The only '%' had nothing after it: it was the tape end of the program before it.
+  if (tape_ != Tape::Before && !leader_.programs.empty() &&
+      (out_.programs.empty() || (out_.programs.size() == 1 && onlyComments()))) {
+    const uint32_t unread = out_.unreadLine;
+    out_ = std::move(leader_);
+    out_.unreadLine = unread;
+  }
+  // Nothing but comments is no program either.
+  if (out_.programs.size() == 1 && onlyComments()) out_.programs.clear();
+  if (out_.programs.empty()) addNoProgram();
+}
+
+// A text without a program (empty, "%" alone, only leader) is one program whose only block
+// raises PS9008 where the text is: a run of it stops with an alarm, `ncvm check` lists it.
+void Compiler::addNoProgram() {
+  const SourceLoc loc{file_, std::max<uint32_t>(firstMarkLine_, 1), 1};
+  out_.programs.emplace_back();
+  Program& p = out_.programs.back();
+  p.name = std::string(stem_);
+  p.loc = loc;
+  p.errors.push_back(Alarm{alarmCode(AlarmId::NoProgramText),
+                           std::string(alarmMessage(AlarmId::NoProgramText)), loc, std::nullopt,
+                           -1});
+  p.macroOps.push_back(MacroOps{});
+  p.macroOps.back().error = 0;
+  Block b;
+  b.kind = BlockKind::Error;
+  b.loc = loc;
+  b.ops = 0;
+  p.blocks.push_back(b);
 }
 
 void Compiler::compilePiece() {
   size_t pos = 0;
-  // '%' characters are separators, so "%O1200(TITLE)" works; the first one ends the leader.
-  if (!sawPercent_) {
-    const size_t percent = s_.find('%');
-    if (percent != std::string_view::npos) {
-      sawPercent_ = true;
-      // All before it was leader: what an earlier piece compiled of it goes. Its lines count,
-      // so line numbers stay right.
-      out_ = ParsedFile{};
-      prog_ = nullptr;
-      hasControlFlow_ = false;
-      sawHeaderComment_ = false;
-      line_ += static_cast<uint32_t>(countNewlines(s_.substr(0, percent)));
-      const size_t nl = s_.rfind('\n', percent);
-      lineStart_ = nl == std::string_view::npos ? 0 : nl + 1;
-      pos = percent;
-      leaderLine_ = true;
-    }
+  if (firstPiece_) {
+    firstPiece_ = false;
+    if (s_.starts_with(kUtf8Bom)) pos = kUtf8Bom.size();  // columns count from after it
   }
   const char* const text = s_.data();
   // Once a program is open, a plain line (nearly every line of a CAM program) is compiled in
-  // one pass, if a '\n' ends it (the scan stops there); the first line after a leader starts
-  // with '%' and is never plain.
+  // one pass, if a '\n' ends it (the scan stops there); a line with a '%' is never plain.
   const size_t lastNewline = s_.rfind('\n');
   const size_t fastBefore =
       !opt_.fastLines || lastNewline == std::string_view::npos ? 0 : lastNewline + 1;
   while (pos < s_.size()) {
+    if (tape_ == Tape::Done) return skipUnread(pos);
     if (prog_ && pos < fastBefore) {
       pos = static_cast<size_t>(compileFastLines(text + pos, text + fastBefore, file_, line_,
                                                  opt_.maxLineLength, *prog_, out_.fastLines) -
@@ -225,11 +291,49 @@ void Compiler::compilePiece() {
     ++line_;
     size_t nl = s_.find('\n', pos);
     size_t e = nl == std::string_view::npos ? s_.size() : nl;
-    if (!leaderLine_) lineStart_ = pos;
-    leaderLine_ = false;
+    lineStart_ = pos;
     parseLine(pos, e);
     pos = e + 1;
   }
+}
+
+// The lines after the closing '%' are not read; they still count, and the first one holding
+// something is noted (the store warns about it).
+void Compiler::skipUnread(size_t pos) {
+  while (pos < s_.size()) {
+    ++line_;
+    size_t nl = s_.find('\n', pos);
+    size_t e = nl == std::string_view::npos ? s_.size() : nl;
+    if (!out_.unreadLine && !onlyFiller(s_.substr(pos, e - pos))) out_.unreadLine = line_;
+    pos = e + 1;
+  }
+}
+
+// A '%' outside a comment at after - 1. Returns where the line goes on being compiled.
+size_t Compiler::tapeMark(size_t after, size_t e) {
+  if (tape_ == Tape::Inside) {
+    tape_ = Tape::Done;  // the tape end: nothing after it is read
+    if (!onlyFiller(s_.substr(after, e - after))) out_.unreadLine = line_;
+    return e;
+  }
+  if (tape_ == Tape::Done) return e;
+  // The first '%': what was compiled before it is leader (kept aside: finish()).
+  finishProgram();
+  leader_ = std::move(out_);
+  out_ = ParsedFile{};
+  prog_ = nullptr;
+  headerless_ = false;
+  sawHeaderComment_ = false;
+  tape_ = Tape::Inside;
+  firstMarkLine_ = line_;
+  // The rest of its line is a title ("% TITLE", F30i-DS), unless a program header starts
+  // there ("%O1200(TITLE)").
+  size_t k = after;
+  while (k < e && isSpace(s_[k])) ++k;
+  const bool header =
+      k < e &&
+      (s_[k] == '<' || ((s_[k] == 'O' || s_[k] == ':') && k + 1 < e && isDigit(s_[k + 1])));
+  return header ? k : e;
 }
 
 void Compiler::parseLine(size_t b, size_t e) {
@@ -248,10 +352,16 @@ void Compiler::parseLine(size_t b, size_t e) {
       if (c == ')') inComment = false;
       continue;
     }
-    if (c == '(') inComment = true;
-    else if (c == ';' || c == '%') {
+    if (c == '(') {
+      inComment = true;
+    } else if (c == ';') {
       parseBlock(start, k);
       start = k + 1;
+    } else if (c == '%') {
+      parseBlock(start, k);
+      start = tapeMark(k + 1, e);
+      if (tape_ == Tape::Done) return;
+      k = start - 1;
     }
   }
   parseBlock(start, e);
@@ -262,6 +372,9 @@ void Compiler::parseBlock(size_t b, size_t e) {
   end_ = e;
   skipSpaces();
   if (atEnd()) return;
+  // After the leading '%', before any program: filler bytes (a DOS end-of-file mark after a
+  // file's only '%', which is then its tape end) are not a block.
+  if (!prog_ && tape_ == Tape::Inside && onlyFiller(s_.substr(i_, e - i_))) return;
   blk_ = Block{};
   ops_ = MacroOps{};
   blk_.loc = SourceLoc{file_, line_, col()};
@@ -416,7 +529,7 @@ void Compiler::parseStatements() {
     } else if (isUpper(c)) {
       if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
       parseWord();
-    } else if (c == ',' && (peek(1) == 'C' || peek(1) == 'R')) {
+    } else if (c == ',' && (peek(commaLetter()) == 'C' || peek(commaLetter()) == 'R')) {
       if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
       parseCommaWord();
     } else if (c == '<') {
@@ -451,17 +564,26 @@ void Compiler::commitBlock() {
   uint32_t nWords = static_cast<uint32_t>(p.words.size() - blk_.firstWord);
   // One pass: G65/G66 (their words are arguments, which take a point), decimal points where
   // an address forbids them (checked again below, rare), and the plain-block test.
-  bool macroCall = false, forbiddenPoint = false, plain = nWords > 0;
+  bool macroCall = false, forbiddenPoint = false, forbiddenMinus = false, plain = nWords > 0;
   uint32_t seen = 0;  // plain: each letter once
   for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     if (w.letter == 'G' && w.kind == WordKind::Literal)
       macroCall |= w.value == 65 || w.value == 66 || w.value == 66.1;
     forbiddenPoint |= (w.flags & kHasPoint) && forbidsPoint(w.letter);
+    forbiddenMinus |= (w.flags & kHasMinus) != 0;
     if (plain) {
       plain = plainWord(w) && !(seen & (1u << (w.letter - 'A')));
       if (plain) seen |= 1u << (w.letter - 'A');
     }
+  }
+  // In a macro call every letter but P, L (and G, which is no argument) is an argument: a
+  // signed value that becomes #7, #11, #13, #19, #20 ... (H-2.).
+  for (uint32_t k = blk_.firstWord; forbiddenMinus && k < p.words.size(); ++k) {
+    const Word& w = p.words[k];
+    bool argument = macroCall && w.letter != 'P' && w.letter != 'L' && w.letter != 'G';
+    if ((w.flags & kHasMinus) && !argument)
+      fail(AlarmId::IllegalMinus, std::string(1, w.letter), w.col);
   }
   for (uint32_t k = blk_.firstWord; forbiddenPoint && k < p.words.size(); ++k) {
     const Word& w = p.words[k];
@@ -492,6 +614,7 @@ double Compiler::parseNumberText(bool& hasPoint, int& intDigits) {
   // anything else is scanned again by parseNumberSlow.
   const char* text = s_.data();
   DecimalText d;
+  numberTooLong_ = false;
   if (!scanDecimal(text + i_, text + end_, d)) return parseNumberSlow(hasPoint, intDigits);
   hasPoint = d.hasPoint;
   intDigits = d.intDigits;
@@ -544,8 +667,10 @@ double Compiler::parseNumberSlow(bool& hasPoint, int& intDigits) {
     buf = std::string(num) + "0";
     num = buf;
   }
+  // Out of a double's range only with 309 digits or more: too many digits, which the caller
+  // raises as PS0003 at the word or constant (one alarm, one place, whatever the length).
   auto res = std::from_chars(num.data(), num.data() + num.size(), v);
-  if (res.ec != std::errc()) fail(AlarmId::FloatOverflow, "number out of range");
+  if (res.ec != std::errc()) numberTooLong_ = true;
   return v;
 }
 
@@ -559,11 +684,19 @@ void Compiler::parseWord() {
   Word w;
   w.letter = letter;
   w.col = static_cast<uint16_t>(at > 0xffff ? 0xffff : at);
+  // The sign may stand apart from its value (Z - [#26], Z- 5.): the control skips spaces
+  // there as anywhere between a letter and its value.
   char c = peek();
-  if (c == '#' || ((c == '-' || c == '+') && peek(1) == '#')) {
-    bool neg = c == '-';
-    if (c != '#') ++i_;
-    if (neg && forbidsMinus(letter)) fail(AlarmId::IllegalMinus, std::string(1, letter), at);
+  const bool neg = c == '-', sign = c == '-' || c == '+';
+  if (sign) {
+    ++i_;
+    skipSpaces();
+    c = peek();
+  }
+  // A minus on P, M, S, T, H, D... is checked at the end of the block: in a G65/G66 block
+  // those letters are arguments and take one (H-2.).
+  if (neg && forbidsMinus(letter)) w.flags |= kHasMinus;
+  if (c == '#') {
     if (isDigit(peek(1))) {
       ++i_;
       int64_t n = 0;
@@ -584,10 +717,7 @@ void Compiler::parseWord() {
       w.kind = WordKind::Expr;
       w.a = static_cast<int32_t>(prog_->exprs.size() - 1);
     }
-  } else if (c == '[' || ((c == '-' || c == '+') && peek(1) == '[')) {
-    bool neg = c == '-';
-    if (c != '[') ++i_;
-    if (neg && forbidsMinus(letter)) fail(AlarmId::IllegalMinus, std::string(1, letter), at);
+  } else if (c == '[') {
     uint32_t begin = static_cast<uint32_t>(prog_->code.size());
     depth_ = 0;
     Type t = parseBracket();
@@ -596,17 +726,17 @@ void Compiler::parseWord() {
     prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
     w.kind = WordKind::Expr;
     w.a = static_cast<int32_t>(prog_->exprs.size() - 1);
-  } else if (isDigit(c) || c == '.' || c == '-' || c == '+') {
-    if (c == '-' && forbidsMinus(letter)) fail(AlarmId::IllegalMinus, std::string(1, letter), at);
+  } else if (isDigit(c) || c == '.') {
     bool hasPoint = false;
     int intDigits = 0;
-    size_t numStart = i_;
-    w.value = parseNumberText(hasPoint, intDigits);
-    if (i_ == numStart || (i_ == numStart + 1 && (c == '-' || c == '+')))
-      fail(AlarmId::NoDataAfterAddress, std::string(1, letter), at);
+    const size_t numStart = i_;
+    const double v = parseNumberText(hasPoint, intDigits);
+    // "X-." has no digit: it reads as zero, as "X." does.
+    const bool noDigit = c == '.' && i_ == numStart + 1;
+    w.value = neg && !noDigit ? -v : v;
     // Decimal points on P, M, S, T, H, D... are checked at the end of the block: in a
     // G65/G66 block those letters are arguments and take a point (D5.0).
-    if (intDigits > 9) fail(AlarmId::TooManyDigits, std::string(1, letter), at);
+    if (intDigits > 9 || numberTooLong_) fail(AlarmId::TooManyDigits, std::string(1, letter), at);
     if (hasPoint) w.flags |= kHasPoint;
     // 999.99999 is the smallest value that can exceed 99999999 increments (IS-C inch, 10^5 per
     // inch); smaller ones are never checked again.
@@ -621,8 +751,9 @@ void Compiler::parseWord() {
 
 void Compiler::parseCommaWord() {
   uint32_t at = col();
-  char letter = peek(1) == 'C' ? 'c' : 'r';
-  i_ += 2;
+  const size_t k = commaLetter();
+  char letter = peek(k) == 'C' ? 'c' : 'r';
+  i_ += k + 1;
   skipSpaces();
   Word w;
   w.letter = letter;
@@ -643,6 +774,8 @@ void Compiler::parseCommaWord() {
     w.value = parseNumberText(hasPoint, intDigits);
     if (i_ == numStart || (i_ == numStart + 1 && (first == '-' || first == '+')))
       fail(AlarmId::NoDataAfterAddress, letter == 'c' ? ",C" : ",R", at);
+    if (intDigits > 9 || numberTooLong_)
+      fail(AlarmId::TooManyDigits, letter == 'c' ? ",C" : ",R", at);
     if (hasPoint) w.flags |= kHasPoint;
   }
   prog_->words.push_back(w);
@@ -831,6 +964,18 @@ bool Compiler::peekKeyword(const char* kw) const {
   return true;
 }
 
+// The operator kw here: alone in its run of letters, or run together with the function name
+// after it (IF[ABS[#10]LEABS[#11]], #12=#10ANDABS[#11]): vendors' macros for Fanuc controls
+// are written both ways.
+bool Compiler::operatorAt(const char* kw) const {
+  const size_t n = std::strlen(kw), run = letterRun();
+  if (run < n || !peekKeyword(kw)) return false;
+  if (run == n) return true;
+  const std::string_view rest = s_.substr(i_ + n, run - n);
+  return std::any_of(std::begin(kFunctions), std::end(kFunctions),
+                     [&](const FnName& f) { return rest == f.name; });
+}
+
 int32_t Compiler::compileExpr(Type want, uint32_t at) {
   depth_ = 0;
   uint32_t begin = static_cast<uint32_t>(prog_->code.size());
@@ -851,17 +996,15 @@ Type Compiler::parseRel() {
     Op op;
   } rel[] = {{"EQ", Op::Eq}, {"NE", Op::Ne}, {"GT", Op::Gt},
              {"GE", Op::Ge}, {"LT", Op::Lt}, {"LE", Op::Le}};
-  if (letterRun() == 2) {
-    for (const auto& r : rel) {
-      if (peekKeyword(r.kw)) {
-        uint32_t at = col();
-        i_ += 2;
-        Type b = parseSum();
-        if (a != Type::Num || b != Type::Num)
-          fail(AlarmId::IllegalExpressionFormat, "comparison of conditions", at);
-        emit(r.op, at);
-        return Type::Bool;
-      }
+  for (const auto& r : rel) {
+    if (operatorAt(r.kw)) {
+      uint32_t at = col();
+      i_ += 2;
+      Type b = parseSum();
+      if (a != Type::Num || b != Type::Num)
+        fail(AlarmId::IllegalExpressionFormat, "comparison of conditions", at);
+      emit(r.op, at);
+      return Type::Bool;
     }
   }
   return a;
@@ -877,8 +1020,8 @@ Type Compiler::parseSum() {
     size_t len = 1;
     if (c == '+') op = Op::Add;
     else if (c == '-') op = Op::Sub;
-    else if (letterRun() == 2 && peekKeyword("OR")) op = Op::Or, len = 2;
-    else if (letterRun() == 3 && peekKeyword("XOR")) op = Op::Xor, len = 3;
+    else if (operatorAt("OR")) op = Op::Or, len = 2;
+    else if (operatorAt("XOR")) op = Op::Xor, len = 3;
     else return a;
     i_ += len;
     emit(typedOp(op, a, parseTerm(), at), at);
@@ -908,8 +1051,8 @@ Type Compiler::parseTerm() {
     size_t len = 1;
     if (c == '*') op = Op::Mul;
     else if (c == '/') op = Op::Div;
-    else if (letterRun() == 3 && peekKeyword("AND")) op = Op::And, len = 3;
-    else if (letterRun() == 3 && peekKeyword("MOD")) op = Op::Mod, len = 3;
+    else if (operatorAt("AND")) op = Op::And, len = 3;
+    else if (operatorAt("MOD")) op = Op::Mod, len = 3;
     else return a;
     i_ += len;
     emit(typedOp(op, a, parseUnary(), at), at);
@@ -979,7 +1122,10 @@ Type Compiler::parsePrimary() {
     double v = parseNumberText(hasPoint, intDigits);
     // A constant longer than a double holds exactly (1 and 300 zeros) is no real program's:
     // the control stops at its digit limit; ncvm allows 15 integer digits.
-    if (intDigits > 15) fail(AlarmId::TooManyDigits, "constant with more than 15 digits", at);
+    if (intDigits > 15 || numberTooLong_)
+      fail(AlarmId::TooManyDigits,
+           intDigits > 15 ? "constant with more than 15 digits" : "constant with too many digits",
+           at);
     emit(Op::Const, at, addConst(v));
     return Type::Num;
   }
@@ -1068,6 +1214,7 @@ bool PieceCompiler::next() { return impl_->compiler.nextPiece(); }
 ParsedFile& PieceCompiler::parsed() { return impl_->compiler.parsed(); }
 void PieceCompiler::continueInto(Program& p) { impl_->compiler.continueInto(p); }
 bool PieceCompiler::hasControlFlow() const { return impl_->compiler.hasControlFlow(); }
+bool PieceCompiler::onlyComments() const { return impl_->compiler.onlyComments(); }
 uint32_t PieceCompiler::line() const { return impl_->compiler.line(); }
 
 void resolveStructure(Program& p) {

@@ -27,6 +27,9 @@ struct ParseOptions {
 struct ParsedFile {
   std::vector<Program> programs;
   uint32_t fastLines = 0;  // lines the fast path compiled (blank ones included)
+  // Text after the closing '%' is not read (the tape ends there): the first line of it that
+  // holds more than spaces and filler bytes (NUL, DOS EOF 0x1A, DEL), 0 when none does.
+  uint32_t unreadLine = 0;
 };
 
 // `stem` names the anonymous program of a file that has no O header.
@@ -50,6 +53,9 @@ class PieceCompiler {
   ParsedFile& parsed();
   void continueInto(Program& p);
   bool hasControlFlow() const;  // the open program has a WHILE, END, GOTO or IF block
+  // The open program has no header and nothing but comments yet: an O header that follows
+  // replaces it (a title comment before the O number is not a program of its own).
+  bool onlyComments() const;
   uint32_t line() const;        // lines compiled so far
 
  private:

@@ -98,11 +98,15 @@ void ProgramStream::start() {
   pieces_.clear();
   advanced_ = false;
   ParsedFile& parsed = compiler_->parsed();
+  // Comments before the first header may yet give way to it ("(PART NAME)" then "O0001").
   while (compileNext())
-    if (!parsed.programs.empty() && !parsed.programs.front().blocks.empty()) break;
+    if (!parsed.programs.empty() && !parsed.programs.front().blocks.empty() &&
+        !compiler_->onlyComments())
+      break;
   // What StreamScan accepts compiles to one program without loops or jumps; anything else
   // (a file of nothing but comments, say) is loaded whole by the caller instead.
-  usable_ = parsed.programs.size() == 1 && !compiler_->hasControlFlow();
+  usable_ = parsed.programs.size() == 1 && !compiler_->hasControlFlow() &&
+            !compiler_->onlyComments();
   if (!usable_) return;
   Program& first = parsed.programs.front();
   if (!prog_.stream) {  // the first start: the program is new
@@ -193,7 +197,7 @@ int32_t ProgramStream::sequenceAt(uint32_t line) {
   in.read(buf.get(), static_cast<std::streamsize>(piece.bytes));
   if (static_cast<size_t>(in.gcount()) != piece.bytes) return -1;
   const std::string_view text(buf.get(), piece.bytes);
-  size_t k = 0;
+  size_t k = piece.offset == 0 && text.starts_with("\xEF\xBB\xBF") ? 3 : 0;  // a UTF-8 BOM
   for (uint32_t l = piece.firstLine; l < line; ++l) {
     const void* nl = std::memchr(text.data() + k, '\n', text.size() - k);
     if (!nl) return -1;

@@ -123,7 +123,8 @@ size_t plainRun(const char* p, size_t n, uint64_t& lines, bool& letter) {
 void StreamScan::piece(std::string_view text) {
   const char* p = text.data();
   const size_t n = text.size();
-  size_t k = 0;
+  // A UTF-8 byte-order mark at the start of the file is no program text (the compiler skips it).
+  size_t k = first_ && text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
   while (ok_ && k < n) {
     // Outside comments, whole vectors of plain bytes at once; then the byte rules for the next
     // sixteen bytes.
