@@ -178,6 +178,13 @@ std::string otherLine(std::mt19937& rng) {
       "X-0",
       "X-0.0",
       "Z+.5",
+      "Z- 5.",
+      "X - 1.5 Y+ 2",
+      "Z - [#26]",
+      "G1 X50., R5.",
+      "G65 P9 H-2. D- 1 S-4",
+      "H-2",
+      "\xEF\xBB\xBFX1.",
   };
   return kOther[rng() % (sizeof kOther / sizeof kOther[0])];
 }

@@ -116,6 +116,68 @@ TEST(LineChunks, LeaderBeforeALaterPercentIsDropped) {
   expectSameForEveryChunk(leader + "LINE%O0002\nX9.\n");
 }
 
+// The tape marks (issue 24.1), comments before the O number (24.2) and a byte-order mark
+// (26.13): every piece size compiles them as the whole text does.
+TEST(LineChunks, TapeMarksLeaderCommentsAndByteOrderMark) {
+  for (const std::string& text :
+       {std::string("O0001\nG01 X1. F100.\nX2.\nM30\n%\n"),         // only a trailing '%'
+        std::string("O0001\nX1.\nM30\n%\x1a"),                       // and a DOS EOF after it
+        std::string("%\nO0001\nX1.\nM30\n%\nO0002\nX3.\n%\n"),      // text after the closing '%'
+        std::string("%\n(PART NAME)\n(REV B)\nO0001 (T)\nX1.\nM30\n%\n"),
+        std::string("% (PART NAME)\nO0001\nX1.\n%\n"),
+        std::string("(PART)\nO0001\nX1.\n(NOT A LEADER)\nO0002\nX2.\n"),
+        std::string("O0001\n(STEPOVER 50%)\nX1.\n"),
+        std::string("\xEF\xBB\xBFO0001\nX1. Y2.\n"), std::string(""), std::string("%\n"),
+        std::string("\n\n%\n\n"), std::string("(ONLY A COMMENT)\n")}) {
+    SCOPED_TRACE(text);
+    expectSameForEveryChunk(text);
+  }
+}
+
+TEST(LineChunks, TapeMarksDecideWhatIsTheProgram) {
+  auto parse = [](const std::string& text) { return parseProgramText(text, 3, "stem"); };
+  // Only a trailing '%' (and a DOS EOF after it): the text before it is the program.
+  for (const char* text : {"O0001\nX1.\nM30\n%\n", "O0001\nX1.\nM30\n%\x1a", "X1.\n%\n\x1a\n"}) {
+    ParsedFile f = parse(text);
+    ASSERT_EQ(f.programs.size(), 1u) << text;
+    EXPECT_TRUE(f.programs[0].errors.empty()) << text;
+    EXPECT_EQ(f.programs[0].blocks.size(), text[0] == 'O' ? 2u : 1u) << text;
+  }
+  // With a leading '%', what comes before it is leader, whatever follows.
+  ParsedFile led = parse("LEADER X1.\n%\nO0002\nX1.\n");
+  ASSERT_EQ(led.programs.size(), 1u);
+  EXPECT_EQ(led.programs[0].number, 2);
+  // The closing '%' ends the text; the first line after it holding something is noted.
+  ParsedFile closed = parse("%\nO0001\nX1.\n%\n\n(LATER)\nO0002\n");
+  ASSERT_EQ(closed.programs.size(), 1u);
+  EXPECT_EQ(closed.unreadLine, 6u);
+  EXPECT_EQ(parse("%\nO0001\nX1.\n%\x1a\n\x1a").unreadLine, 0u);
+  // Comments before the O number are no program of their own; after it they are blocks.
+  ParsedFile titled = parse("%\n(PART NAME)\nO0001\n(FIRST BLOCK)\nX1.\n%\n");
+  ASSERT_EQ(titled.programs.size(), 1u);
+  EXPECT_EQ(titled.programs[0].number, 1);
+  EXPECT_EQ(titled.programs[0].blocks.size(), 2u);
+  // A header-less program that starts with a comment and then has blocks keeps both.
+  ParsedFile headerless = parse("(PART)\nX1.\nO0002\nX2.\n");
+  ASSERT_EQ(headerless.programs.size(), 2u);
+  EXPECT_EQ(headerless.programs[0].number, -1);
+  EXPECT_EQ(headerless.programs[0].blocks.size(), 2u);
+  // No program text: one program whose only block is PS9008, at the '%' line or line 1.
+  for (const char* text : {"", "%\n", "\n\n%\n", "(ONLY A COMMENT)\n", "\xEF\xBB\xBF"}) {
+    ParsedFile f = parse(text);
+    ASSERT_EQ(f.programs.size(), 1u) << text;
+    ASSERT_EQ(f.programs[0].errors.size(), 1u) << text;
+    EXPECT_EQ(f.programs[0].errors[0].code, "PS9008") << text;
+    EXPECT_EQ(f.programs[0].errors[0].loc.line, std::string(text) == "\n\n%\n" ? 3u : 1u) << text;
+  }
+  // The byte-order mark is skipped: columns count from after it.
+  ParsedFile bom = parse("\xEF\xBB\xBFO0001\nX1. Q\n");
+  ASSERT_EQ(bom.programs.size(), 1u);
+  EXPECT_EQ(bom.programs[0].number, 1);
+  ASSERT_EQ(bom.programs[0].errors.size(), 1u);
+  EXPECT_EQ(bom.programs[0].errors[0].loc.col, 5u);
+}
+
 // A text that is one long line: the buffer grows to hold it; with a line length limit it
 // becomes PS9004 Error blocks as in the whole text.
 TEST(LineChunks, OneHugeLineAndTheLineLengthAlarm) {

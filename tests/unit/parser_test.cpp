@@ -163,3 +163,79 @@ TEST(Parser, PlainBlockFlag) {
   EXPECT_FALSE(flagged("G01 X1000. F100.\n"));  // long enough for the digit check
   EXPECT_FALSE(flagged("#1=2\n"));
 }
+
+namespace {
+// The compiled code and constants of a program's expressions, for comparing two spellings.
+std::vector<std::pair<int, int32_t>> codeOf(const Program& p) {
+  std::vector<std::pair<int, int32_t>> out;
+  for (const Instr& i : p.code)
+    out.emplace_back(static_cast<int>(i.op) * 100 + static_cast<int>(i.fn),
+                     i.op == Op::Const ? static_cast<int32_t>(p.consts[i.arg] * 1000) : i.arg);
+  return out;
+}
+}  // namespace
+
+// Issue 24.6: an operator run together with the function name after it is that operator.
+TEST(Parser, OperatorRunTogetherWithAFunction) {
+  const std::pair<const char*, const char*> same[] = {
+      {"O1\nIF[ABS[#10]LEABS[#11]]GOTO5\nN5\n", "O1\nIF[ABS[#10] LE ABS[#11]]GOTO5\nN5\n"},
+      {"O1\n#12=#10ANDABS[#11]\n", "O1\n#12=#10 AND ABS[#11]\n"},
+      {"O1\nIF[1EQFIX[1.5]]GOTO5\nN5\n", "O1\nIF[1 EQ FIX[1.5]]GOTO5\nN5\n"},
+      {"O1\nIF[3GTSQRT[4]]GOTO5\nN5\n", "O1\nIF[3 GT SQRT[4]]GOTO5\nN5\n"},
+      {"O1\n#1=7MODABS[#2]\n", "O1\n#1=7 MOD ABS[#2]\n"},
+      {"O1\n#1=4ORFIX[#2]\n", "O1\n#1=4 OR FIX[#2]\n"},
+      {"O1\n#1=4XORROUND[#2]\n", "O1\n#1=4 XOR ROUND[#2]\n"},
+  };
+  for (const auto& [joined, spaced] : same) {
+    SCOPED_TRACE(joined);
+    Program a = one(joined), b = one(spaced);
+    EXPECT_TRUE(a.errors.empty()) << (a.errors.empty() ? "" : a.errors[0].text);
+    EXPECT_EQ(codeOf(a), codeOf(b));
+  }
+  // A run of letters that is an operator and something else is still an error.
+  EXPECT_EQ(one("O1\n#1=4ORFOO[#2]\n").errors.size(), 1u);
+  EXPECT_EQ(one("O1\n#1=4ANDX\n").errors.size(), 1u);
+}
+
+// Issue 24.7: spaces after ',' of ,R/,C and between a sign and its value.
+TEST(Parser, SpacesAfterCommaAndSign) {
+  Program p = one("O1\nG01 X50., R5.\nZ - [#26]\nZ- 5.\nX + 1.5\n");
+  EXPECT_TRUE(p.errors.empty()) << (p.errors.empty() ? "" : p.errors[0].text);
+  ASSERT_EQ(p.blocks.size(), 4u);
+  const Word& r = p.words[p.blocks[0].firstWord + 2];
+  EXPECT_EQ(r.letter, 'r');
+  EXPECT_EQ(r.value, 5.0);
+  EXPECT_EQ(p.words[p.blocks[2].firstWord].value, -5.0);
+  EXPECT_EQ(p.words[p.blocks[3].firstWord].value, 1.5);
+  EXPECT_EQ(p.words[p.blocks[1].firstWord].kind, WordKind::Expr);
+}
+
+// Issue 24.9: D H M S T in a G65/G66 block are signed arguments; elsewhere PS0006.
+TEST(Parser, MinusOnIntegerLettersOnlyInMacroCalls) {
+  EXPECT_TRUE(one("O1\nG65 P9 H-2. D-1 M-3. S-4 T-#1\n").errors.empty());
+  EXPECT_TRUE(one("O1\nG66 P9 H-2.\n").errors.empty());
+  for (const char* bad : {"O1\nM98 P9 H-2\n", "O1\nG65 P-9\n", "O1\nG65 P9 L-2\n", "O1\nS-100\n",
+                          "O1\nG43 H-#1 Z5.\n"}) {
+    Program p = one(bad);
+    ASSERT_EQ(p.errors.size(), 1u) << bad;
+    EXPECT_EQ(p.errors[0].code, "PS0006") << bad;
+  }
+}
+
+// Issue 26.14: a number beyond a double's range is PS0003 where a shorter over-long one is.
+TEST(Parser, NumbersBeyondADoubleAreTooManyDigits) {
+  for (const std::string& digits : {std::string(20, '9'), std::string(308, '9'), std::string(309, '9'),
+                                    std::string(400, '9')}) {
+    Program c = one(("O1\n#1=" + digits + "\n").c_str());
+    ASSERT_EQ(c.errors.size(), 1u);
+    EXPECT_EQ(c.errors[0].code, "PS0003");
+    EXPECT_EQ(c.errors[0].loc.col, 4u);
+    Program w = one(("O1\nG00 X" + digits + "\n").c_str());
+    ASSERT_EQ(w.errors.size(), 1u);
+    EXPECT_EQ(w.errors[0].code, "PS0003");
+    EXPECT_EQ(w.errors[0].loc.col, 5u);
+  }
+  Program f = one(("O1\n#1=." + std::string(400, '0') + "1\n").c_str());
+  ASSERT_EQ(f.errors.size(), 1u);
+  EXPECT_EQ(f.errors[0].code, "PS0003");
+}

@@ -97,6 +97,12 @@ TEST(StreamScan, RefusesWhatNeedsTheWholeProgram) {
   EXPECT_FALSE(scans("%\n(C)O1234\n", "X1.\n"));
 }
 
+TEST(StreamScan, SkipsAByteOrderMark) {
+  // The compiler skips a UTF-8 BOM at the start of the file (issue 26.13); so does the scan.
+  EXPECT_TRUE(scans(std::string("\xEF\xBB\xBF") + kHead, plainLines(10)));
+  EXPECT_FALSE(scans(std::string(kHead) + "\xEF\xBB\xBF", plainLines(10)));  // only at the start
+}
+
 TEST(StreamScan, CountsLines) {
   StreamScan s;
   s.piece(kHead);
@@ -117,6 +123,43 @@ TEST(ProgramStream, APlainProgramRunsPieceByPieceAsItRunsWhole) {
   EXPECT_GT(whole.blocksHeld, 3000u);
   EXPECT_LT(streamed.blocksHeld, 20u);
   fs::remove(f);
+}
+
+// A title comment before the O number (issue 24.2) and a byte-order mark (issue 26.13) in a
+// streamed file: O0001 is the program, streamed, and runs as it does compiled whole.
+TEST(ProgramStream, ATitleBeforeTheHeaderAndAByteOrderMarkStream) {
+  const std::string body = plainLines(400) + "M30\n%\n";
+  for (const std::string& head :
+       {std::string("%\n(PART NAME)\n(DRAWING 12-345 REV B)\nO0001\nG90 G21 G17\n"),
+        std::string("% (PART NAME)\nO0001\nG90 G21 G17\n"),
+        std::string("\xEF\xBB\xBF%\nO0001 (BOM)\nG90 G21 G17\n")}) {
+    SCOPED_TRACE(head);
+    const fs::path f = writeFile("title.nc", head + body);
+    const Outcome whole = run(f, false);
+    const Outcome streamed = run(f, true, defaultSetup(), {}, 64);
+    EXPECT_TRUE(streamed.streamed);
+    EXPECT_EQ(whole.text, streamed.text);
+    EXPECT_NE(whole.text.find("\"end\": \"M30\""), std::string::npos) << whole.text.substr(0, 400);
+    Session s(defaultSetup());
+    s.streamMainProgram({0, 64});
+    s.addProgramFile(f.string());
+    EXPECT_EQ(s.main()->number, 1);
+    fs::remove(f);
+  }
+}
+
+// A big file with only a trailing '%', and one with bytes after its closing '%': the stream
+// scan refuses the first (compiled whole), and both keep their program.
+TEST(ProgramStream, TapeEndsInBigFiles) {
+  for (const std::string& text : {std::string("O0001\nG90 G21\n") + plainLines(400) + "M30\n%\n",
+                                   std::string(kHead) + plainLines(400) + "M30\n%\x1a\x1a\n"}) {
+    const fs::path f = writeFile("tape_end.nc", text);
+    const Outcome whole = run(f, false);
+    const Outcome streamed = run(f, true, defaultSetup(), {}, 64);
+    EXPECT_EQ(whole.text, streamed.text);
+    EXPECT_NE(whole.text.find("\"end\": \"M30\""), std::string::npos) << whole.text.substr(0, 400);
+    fs::remove(f);
+  }
 }
 
 TEST(ProgramStream, TheTopBlocksSequenceNumbersComeFromTheFile) {
