@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "exec/executor.hpp"
 #include "exec/words.hpp"
@@ -110,7 +111,7 @@ void Executor::applyToolShift() {
       toolShift_[2] = mode == 430 ? len : -len;
     }
   } else {
-    int tool = latheToolNumber(modal_.tool);
+    int tool = latheGeometryNumber(modal_.tool);
     int wear = latheWearNumber(modal_.tool);
     if (wear != 0 && wear < kToolRows) {
       const ToolOffsetRow& w = mem_.tools[static_cast<size_t>(wear)];
@@ -125,46 +126,101 @@ void Executor::applyToolShift() {
 
 // G10 (programmable data input): L2 work offsets, L20 G54.1 P, L10-L13 mill tool offsets
 // (memory C), and the lathe form without L. G90 replaces, G91 (or U/W/V/C) adds.
+// The block is all or nothing, as on the control: every value is read and checked first,
+// so a value out of range (PS0032) leaves the offsets the block names unchanged.
 void Executor::programmableDataInput(const Words& w) {
+  struct Write {
+    enum Kind { Work, Tool, Tip } kind;
+    int index, field;  // work index and axis slot; tool row and field; tip row
+    bool wear;
+    int64_t nm;  // value (tip: the direction)
+    bool add;
+  };
+  std::vector<Write> writes;
   int L = w.has('L') ? static_cast<int>(std::llround(w.value('L'))) : -1;
   int P = w.has('P') ? static_cast<int>(std::llround(w.value('P'))) : -1;
   bool add = modal_.incremental;
   if (L == 2 || L == 20) {
     int index = L == 2 ? P : (P >= 1 && P <= 300 ? kWorkP1 + P - 1 : -1);
-    if ((L == 2 && (P < 0 || P > 6)) || index < 0) throw AlarmError(AlarmId::IllegalPInG10, fmt::format("L{} P{}", L, P));
+    if ((L == 2 && (P < 0 || P > 6)) || index < 0)
+      throw AlarmError(AlarmId::IllegalPInG10, fmt::format("L{} P{}", L, P));
     static constexpr char kInc[kMaxAxes] = {'U', 'V', 'W', 0, 0, 'H'};
     for (int k = 0; k < kMaxAxes; ++k) {
       if (!setup_.axes[static_cast<size_t>(k)].present) continue;
       char a = kAxisLetters[k];
-      if (w.has(a)) writeWorkOffset(index, k, offsetNm(w.value(a), w.hasPoint(a), k), add);
-      if (lathe_ && kInc[k] && w.has(kInc[k])) writeWorkOffset(index, k, offsetNm(w.value(kInc[k]), w.hasPoint(kInc[k]), k), true);
+      if (w.has(a))
+        writes.push_back(
+            {Write::Work, index, k, false, offsetNm(w.value(a), w.hasPoint(a), k), add});
+      if (lathe_ && kInc[k] && w.has(kInc[k]))
+        writes.push_back({Write::Work, index, k, false,
+                          offsetNm(w.value(kInc[k]), w.hasPoint(kInc[k]), k), true});
     }
-    return;
-  }
-  if (!lathe_) {
+  } else if (!lathe_) {
     if (L < 10 || L > 13)
-      throw AlarmError(AlarmId::IllegalPInG10, L < 0 ? std::string("G10 needs L") : fmt::format("L{}", L));
+      throw AlarmError(AlarmId::IllegalPInG10,
+                       L < 0 ? std::string("G10 needs L") : fmt::format("L{}", L));
     if (P < 1 || P >= kToolRows) throw AlarmError(AlarmId::IllegalPInG10, fmt::format("P{}", P));
     if (!w.has('R')) return;
     int field = L <= 11 ? kFieldXorH : kFieldRorD;
-    writeToolOffset(P, field, L == 11 || L == 13, lengthNm(w.value('R'), w.hasPoint('R'), 2), add);
-    return;
+    writes.push_back({Write::Tool, P, field, L == 11 || L == 13,
+                      lengthNm(w.value('R'), w.hasPoint('R'), 2), add});
+  } else {
+    // Lathe: G10 P n (wear) or P 10000+n (geometry), X/U Z/W R/C Y/V Q.
+    if (L != -1 && L != 1 && L != 10 && L != 11)
+      throw AlarmError(AlarmId::IllegalPInG10, fmt::format("L{}", L));
+    bool geometry = P > 10000;
+    int row = geometry ? P - 10000 : P;
+    if (row < 1 || row >= kToolRows)
+      throw AlarmError(AlarmId::IllegalPInG10, fmt::format("P{}", P));
+    struct F {
+      char abs, inc;
+      int field, slot;
+    };
+    static constexpr F fields[] = {{'X', 'U', kFieldXorH, 0},
+                                   {'Z', 'W', kFieldZ, 2},
+                                   {'R', 'C', kFieldRorD, 2},
+                                   {'Y', 'V', kFieldY, 1}};
+    for (const F& f : fields) {
+      if (w.has(f.abs))
+        writes.push_back({Write::Tool, row, f.field, !geometry,
+                          offsetNm(w.value(f.abs), w.hasPoint(f.abs), f.slot), false});
+      if (w.has(f.inc))
+        writes.push_back({Write::Tool, row, f.field, !geometry,
+                          offsetNm(w.value(f.inc), w.hasPoint(f.inc), f.slot), true});
+    }
+    if (w.has('Q'))
+      writes.push_back({Write::Tip, row, 0, false, std::llround(w.value('Q')), false});
   }
-  // Lathe: G10 P n (wear) or P 10000+n (geometry), X/U Z/W R/C Y/V Q.
-  if (L != -1 && L != 1 && L != 10 && L != 11) throw AlarmError(AlarmId::IllegalPInG10, fmt::format("L{}", L));
-  bool geometry = P > 10000;
-  int row = geometry ? P - 10000 : P;
-  if (row < 1 || row >= kToolRows) throw AlarmError(AlarmId::IllegalPInG10, fmt::format("P{}", P));
-  struct F {
-    char abs, inc;
-    int field, slot;
-  };
-  static constexpr F fields[] = {{'X', 'U', kFieldXorH, 0}, {'Z', 'W', kFieldZ, 2}, {'R', 'C', kFieldRorD, 2}, {'Y', 'V', kFieldY, 1}};
-  for (const F& f : fields) {
-    if (w.has(f.abs)) writeToolOffset(row, f.field, !geometry, offsetNm(w.value(f.abs), w.hasPoint(f.abs), f.slot), false);
-    if (w.has(f.inc)) writeToolOffset(row, f.field, !geometry, offsetNm(w.value(f.inc), w.hasPoint(f.inc), f.slot), true);
+  // Check: each value as it would be after the writes before it in the block.
+  std::vector<std::pair<const int64_t*, int64_t>> after;
+  for (const Write& x : writes) {
+    if (x.kind == Write::Tip) {
+      if (x.nm < 0 || x.nm > 9)
+        throw AlarmError(AlarmId::IllegalOffsetValueInG10, "imaginary tip 0-9");
+      continue;
+    }
+    const int64_t* cell =
+        x.kind == Write::Work
+            ? &mem_.work[static_cast<size_t>(x.index)][static_cast<size_t>(x.field)]
+            : &(x.wear ? mem_.tools[static_cast<size_t>(x.index)].wear
+                       : mem_.tools[static_cast<size_t>(x.index)]
+                             .geometry)[static_cast<size_t>(x.field)];
+    int64_t old = *cell;
+    for (const auto& [c, v] : after)
+      if (c == cell) old = v;
+    int64_t value = x.add ? old + x.nm : x.nm;
+    int64_t limit = x.kind == Write::Work ? kMaxWorkOffsetNm : kMaxToolOffsetNm;
+    if (value > limit || value < -limit) throw AlarmError(AlarmId::IllegalOffsetValueInG10);
+    after.emplace_back(cell, value);
   }
-  if (w.has('Q')) setTip(row, static_cast<int>(std::llround(w.value('Q'))));
+  for (const Write& x : writes) {
+    if (x.kind == Write::Work)
+      writeWorkOffset(x.index, x.field, x.nm, x.add);
+    else if (x.kind == Write::Tool)
+      writeToolOffset(x.index, x.field, x.wear, x.nm, x.add);
+    else
+      setTip(x.index, static_cast<int>(x.nm));
+  }
 }
 
 // G52: local coordinate system inside every work system; G52 with zero cancels it.

@@ -270,6 +270,9 @@ class Executor {
   bool plainTargets(const Words& w, std::array<int64_t, kMaxAxes>& target, uint32_t& axesMask);
   void moveTo(const std::array<int64_t, kMaxAxes>& targetWork, MoveMode mode, uint32_t axesMask);
   void arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw);
+  // G02/G03 in effect and the block is an arc: with neither R nor I/J/K it is a line
+  // unless parameter 3403#5 (CIR) asks for PS0022.
+  bool arcBlock(const Words& w) const;
   void arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu, double cv, bool cw);
   void rapidMachine(const std::array<int64_t, kMaxAxes>& targetMachine, uint32_t axesMask);
   void emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
@@ -367,6 +370,11 @@ class Executor {
   // digits T to (tool t, offset o).
   static int latheToolNumber(int t) { return t >= 100 ? t / 100 : t / 10; }
   static int latheWearNumber(int t) { return t >= 100 ? t % 100 : t % 10; }
+  // The geometry row: the offset number oo like the wear (parameter 5002#1 LGN = 0, the
+  // default), or the tool number tt (LGN = 1).
+  int latheGeometryNumber(int t) const {
+    return setup_.bit("5002#1") ? latheToolNumber(t) : latheWearNumber(t);
+  }
 
   // drill_cycles.cpp
   struct DrillCycle {

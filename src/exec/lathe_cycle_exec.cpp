@@ -94,8 +94,9 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
   for (int32_t k = first; k <= last; ++k) {
     const Block& b = prog.blocks[static_cast<size_t>(k)];
     if (b.kind == BlockKind::Empty) continue;
-    if (b.kind != BlockKind::Nc) throw AlarmError(AlarmId::CycleUnavailableCommand, "only NC blocks between P and Q");
-    block_ = &b;
+    block_ = &b;  // an alarm below names this shape block, not the one before it
+    if (b.kind != BlockKind::Nc)
+      throw AlarmError(AlarmId::CycleUnavailableCommand, "only NC blocks between P and Q");
     Words w;
     gatherWords(b, w);
     for (int g = 0; g < w.ng; ++g) {
@@ -122,7 +123,9 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     s.blockIndex = k;
     s.comp = comp;
     s.end = latheTarget(w, at);
-    if (motion == 20 || motion == 30) {
+    // Parameter 3403#5 (CIR) = 0: an arc with neither R nor I/K is a line to its end point.
+    bool arc = (motion == 20 || motion == 30) && (w.any("RIK") || setup_.bit("3403#5"));
+    if (arc) {
       s.kind = motion == 20 ? lathe::SegKind::ArcCw : lathe::SegKind::ArcCcw;
       if (!w.any("RIK")) throw AlarmError(AlarmId::NoRadiusOrCenter, "G02/G03 between P and Q");
       if (w.has('R')) {
@@ -330,7 +333,8 @@ bool Executor::latheCycle(const Words& w, int kind) {
         lathe::PatternParams p{latheCyc_.reliefX, latheCyc_.reliefZ, allowX, allowZ, latheCyc_.divisions};
         moves = plan([&] { return lathe::patternRepeating(c, p); });
       } else {
-        lathe::RoughParams p{latheCyc_.depth, latheCyc_.retract, allowX, allowZ};
+        lathe::RoughParams p{latheCyc_.depth, latheCyc_.retract, allowX, allowZ,
+                             leastIncrement(setup_.increment, modal_.unit)};
         if (p.depth <= 0) throw AlarmError(AlarmId::CycleIllegalCommand, "depth of cut");
         moves = plan([&] { return kind == kRoughTurn ? lathe::roughTurning(c, p) : lathe::roughFacing(c, p); });
       }

@@ -366,6 +366,14 @@ PlaneAxes planeAxes(int plane) {
 }
 }  // namespace
 
+bool Executor::arcBlock(const Words& w) const {
+  if (modal_.motion != 20 && modal_.motion != 30) return false;
+  const PlaneAxes pa = planeAxes(modal_.plane);
+  // Parameter 3403#5 (CIR) = 0: an arc block with neither R nor the plane's centre words
+  // moves linearly to its end point; 1: PS0022 (from arcCenter).
+  return w.has('R') || w.has(pa.cu) || w.has(pa.cv) || setup_.bit("3403#5");
+}
+
 void Executor::arcTo(const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw) {
   const PlaneAxes pa = planeAxes(modal_.plane);
   std::array<int64_t, kMaxAxes> startW;

@@ -253,7 +253,7 @@ bool Executor::plainMotion(Words& w) {
   }
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
-  const bool arc = modal_.motion == 20 || modal_.motion == 30;
+  const bool arc = arcBlock(w);
   const bool hasAxes = plainTargets(w, target, mask);
   if (arc && (hasAxes || w.any("IJKR"))) {
     plannedBlock(w, target, mask, true, modal_.motion == 20);
@@ -517,7 +517,7 @@ void Executor::execNcGeneral(const Block& b) {
       const bool latheThread = lathe_ && (modal_.motion == 320 || modal_.motion == 330);
       if (latheThread) tnrcBeforeCycle(0, w);  // threading moves are not nose-compensated
       if (!latheThread && (modal_.g[7] != 400 || crcBusy())) {
-        bool arc = modal_.motion == 20 || modal_.motion == 30;
+        bool arc = arcBlock(w);
         axisTargets(w, target, mask, &programmed_);
         moved = crcBlock(w, target, mask, arc, modal_.motion == 20);
         break;
@@ -542,7 +542,7 @@ void Executor::execNcGeneral(const Block& b) {
         }
         break;
       }
-      bool arc = modal_.motion == 20 || modal_.motion == 30;
+      bool arc = arcBlock(w);
       bool hasAxes = axisTargets(w, target, mask, moveBase());
       if (arc && (hasAxes || w.any("IJKR"))) {
         moved = plannedBlock(w, target, mask, true, modal_.motion == 20);

@@ -61,7 +61,7 @@ int Executor::tnrcOffsetRow() const {
 double Executor::tnrcRadius() const {
   int row = tnrcOffsetRow();
   if (row == 0) return 0.0;
-  int geo = latheToolNumber(modal_.tool);
+  int geo = latheGeometryNumber(modal_.tool);
   if (geo <= 0 || geo >= kToolRows) geo = 0;
   int64_t r = mem_.tools[static_cast<size_t>(geo)].geometry[kFieldRorD] +
               mem_.tools[static_cast<size_t>(row)].wear[kFieldRorD];

@@ -16,7 +16,7 @@ const std::map<std::string, std::string>& parameterAliases() {
   static const std::map<std::string, std::string> aliases = {
       {"DPI", "3401#0"}, {"NAT", "6004#0"}, {"LRP", "1401#1"}, {"PRT", "6001#1"},
       {"TCS", "6001#5"}, {"CCV", "6001#6"}, {"CLV", "6001#7"}, {"SBM", "6000#5"},
-      {"M3B", "3404#7"}, {"TVC", "0000#0"},
+      {"M3B", "3404#7"}, {"TVC", "0000#0"}, {"CIR", "3403#5"}, {"LGN", "5002#1"},
   };
   return aliases;
 }

@@ -57,9 +57,11 @@ struct CycleError : std::runtime_error {
 };
 
 // G71 (rough turning) and G72 (rough facing). depth = Δd (radius), retract = e,
-// allowX = Δu/2 (radius, signed: + OD, - ID), allowZ = Δw.
+// allowX = Δu/2 (radius, signed: + OD, - ID), allowZ = Δw. increment = the least input
+// increment in program units: the shape checks compare positions in it (0 = exact).
 struct RoughParams {
   double depth = 0, retract = 0, allowX = 0, allowZ = 0;
+  double increment = 0;
 };
 std::vector<Move> roughTurning(const Contour& c, const RoughParams& p);  // G71
 std::vector<Move> roughFacing(const Contour& c, const RoughParams& p);   // G72

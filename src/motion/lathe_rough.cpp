@@ -65,16 +65,26 @@ Frame chooseFrame(const Contour& c, const RoughParams& p, bool facing) {
 
 // Type I: the shape after A' must rise steadily away from the infeed and run steadily
 // along the passes. Type II: only the pass axis must be monotonic (pockets allowed).
-void checkMonotonic(const Path& path, size_t first, bool typeTwo) {
+// Positions are compared in least increments, as the control holds them: an arc whose
+// computed extreme passes its end point by less than half an increment (floating-point
+// noise of the centre, e.g. 2e-7 mm) does not turn back.
+void checkMonotonic(const Path& path, size_t first, bool typeTwo, double increment) {
   constexpr double pi = std::numbers::pi;
+  const double tol = std::max(kEps, increment / 2);
   for (size_t i = first; i < path.size(); ++i) {
     const Piece& p = path[i];
-    bool back = p.b.z < p.a.z - kEps;
-    bool down = !typeTwo && p.b.x < p.a.x - kEps;
+    bool back = p.b.z < p.a.z - tol;
+    bool down = !typeTwo && p.b.x < p.a.x - tol;
     if (detail::isArc(p.kind)) {
-      back = back || detail::sweepsThrough(p, 0) || detail::sweepsThrough(p, pi);
-      down = down || (!typeTwo && (detail::sweepsThrough(p, pi / 2) ||
-                                   detail::sweepsThrough(p, -pi / 2)));
+      // An extreme inside the sweep reverses the axis when it lies beyond the end it turns
+      // back to: past b for a maximum, before a for a minimum.
+      double r = std::hypot(p.a.x - p.c.x, p.a.z - p.c.z);
+      auto passes = [&](double phi, double overshoot) {
+        return detail::sweepsThrough(p, phi) && overshoot > tol;
+      };
+      back = back || passes(0, p.c.z + r - p.b.z) || passes(pi, p.a.z - (p.c.z - r));
+      down = down || (!typeTwo &&
+                      (passes(pi / 2, p.c.x + r - p.b.x) || passes(-pi / 2, p.a.x - (p.c.x - r))));
     }
     if (back || down)
       throw CycleError(AlarmId::ShapeNotMonotonous,
@@ -252,7 +262,7 @@ std::vector<Move> rough(const Contour& c, const RoughParams& p, bool facing) {
     path.push_back(piece);
     at = piece.b;
   }
-  checkMonotonic(path, first, c.nsNamesZ);
+  checkMonotonic(path, first, c.nsNamesZ, p.increment);
 
   SegKind infeed = c.segs.front().kind == SegKind::Rapid ? SegKind::Rapid : SegKind::Line;
   Rougher r(std::move(path), first, home, ns, p, c.nsNamesZ, infeed);

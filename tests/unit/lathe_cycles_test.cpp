@@ -870,6 +870,8 @@ TEST(LatheCycleAlarms, RoughingChecks) {
                                     seg(SegKind::Line, 25, -12)},
                           true);
   expectAlarm([&] { roughTurning(bulge, {2, 0.5, 0, 0}); }, AlarmId::ShapeNotMonotonous);
+  // Compared in least increments, a real reversal (5 mm) is still one.
+  expectAlarm([&] { roughTurning(bulge, {2, 0.5, 0, 0, 0.001}); }, AlarmId::ShapeNotMonotonous);
   // A shape that goes deeper than its ns point in type I.
   Contour deeper = contour({20, 2}, {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 8, -10),
                                      seg(SegKind::Line, 20, -10)});
