@@ -278,7 +278,14 @@ nlohmann::json Session::check() const {
   bool dpi = setup_.dpi();
   for (const Program* p : ownPrograms_) {
     for (const auto& a : p->errors) found.push_back({true, a});
-    for (const auto& a : p->structural) found.push_back({true, a});
+    // DO/END and literal GOTO errors are alarms only if the block runs (a Renishaw macro may
+    // hold a branch to an N it never takes): warnings here, under the alarm's code.
+    for (Alarm a : p->structural) {
+      a.text += a.code == alarmCode(AlarmId::MissingEnd)
+                    ? ": an alarm when the WHILE is false (the control then looks for the END)"
+                    : ": an alarm when this block runs";
+      found.push_back({false, std::move(a)});
+    }
     for (const Block& b : p->blocks) {
       if (b.kind != BlockKind::Nc) continue;
       const Word* w = p->words.data() + b.firstWord;

@@ -80,7 +80,8 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::TooManySubNesting, "TOO MANY SUB,MACRO NESTING",
        "More nested subprogram calls than the control allows."},
       {AlarmId::SequenceNotFound, "SEQUENCE NUMBER NOT FOUND", "M99 P names a sequence number that the "
-                                                                "caller lacks."},
+                                                                "caller lacks, or M98 Q one the called "
+                                                                "program lacks."},
       {AlarmId::IntegerOverflow, "OVERFLOW :INTEGER", "An integer value out of range (BIN, BCD, AND/OR/XOR, "
                                                       "M/S/T/H/D values)."},
       {AlarmId::FloatOverflow, "OVERFLOW :FLOATING", "A result too large (EXP, POW, huge operands, NaN)."},

@@ -117,24 +117,40 @@ void Executor::wholeProgram(const Program& p) {
   if (at >= window && at < windowEnd) block_ = &p.blocks[base + (at - window) / sizeof(Block)];
 }
 
+// The compiler's DO/END and literal GOTO errors, by block, looked up the first time a block
+// of a program that has any runs (blocks are in source order; each error is at its block's
+// start).
+const Alarm* Executor::structuralError(const Program& p, uint32_t k) {
+  auto [it, fresh] = structuralAt_.try_emplace(&p);
+  auto& byBlock = it->second;
+  if (fresh) {
+    for (uint32_t i = 0; i < p.structural.size(); ++i) {
+      const SourceLoc& at = p.structural[i].loc;
+      auto b = std::lower_bound(
+          p.blocks.begin(), p.blocks.end(), at, [](const Block& blk, const SourceLoc& l) {
+            return blk.loc.line != l.line ? blk.loc.line < l.line : blk.loc.col < l.col;
+          });
+      if (b != p.blocks.end() && b->loc.line == at.line && b->loc.col == at.col)
+        byBlock.emplace_back(static_cast<uint32_t>(b - p.blocks.begin()), i);
+    }
+    std::stable_sort(byBlock.begin(), byBlock.end(),
+                     [](auto& x, auto& y) { return x.first < y.first; });
+  }
+  auto e = std::lower_bound(byBlock.begin(), byBlock.end(), k,
+                            [](auto& x, uint32_t v) { return x.first < v; });
+  return e != byBlock.end() && e->first == k ? &p.structural[e->second] : nullptr;
+}
+
+void Executor::raiseStructural(const Alarm& a) {
+  AlarmError e(a.code, a.text);
+  e.hasLoc = true;
+  e.loc = a.loc;
+  e.n = a.n.value_or(-1);
+  throw e;
+}
+
 void Executor::enter(const Program* p, FrameKind kind, int repeats, bool codeCalled) {
   if (!frames_.empty()) wholeProgram(*p);  // a streamed program called from within itself
-  if (!p->structural.empty()) {
-    // Loop and label errors are known before the program runs (issue: before any motion).
-    // A WHILE the compiler rejected earlier in the program is the cause of an unmatched END
-    // (its DO is lost): the control would stop at the WHILE first, so it is the one reported.
-    const Alarm* first = &p->structural.front();
-    for (int32_t k : p->lostLoops) {
-      const Alarm& err = p->errors[static_cast<size_t>(k)];
-      if (err.loc.file == first->loc.file && err.loc.line < first->loc.line) first = &err;
-    }
-    const Alarm& a = *first;
-    AlarmError e(a.code, a.text);
-    e.hasLoc = true;
-    e.loc = a.loc;
-    e.n = a.n.value_or(-1);
-    throw e;
-  }
   Frame f;
   f.prog = p;
   f.kind = kind;
@@ -147,12 +163,23 @@ void Executor::enter(const Program* p, FrameKind kind, int repeats, bool codeCal
   frames_.push_back(f);
 }
 
-void Executor::callSub(const Program* p, int repeats, bool codeCalled) {
+void Executor::callSub(const Program* p, int repeats, bool codeCalled, int32_t startLabel) {
   if (subDepth_ + 1 > setup_.limits.subprogramNesting ||
       subDepth_ + macroDepth_ + 1 > setup_.limits.totalNesting)
     throw AlarmError(AlarmId::TooManySubNesting,
                      fmt::format("more than {} subprogram levels", setup_.limits.subprogramNesting));
+  int32_t start = 0;
+  if (startLabel >= 0) {
+    // M98 Q: the sequence number is searched in the called program from its start (the
+    // caller's own program for M98 Q without P); not found: PS0078.
+    wholeProgram(*p);
+    start = p->findLabel(startLabel, 0);
+    if (start < 0)
+      throw AlarmError(AlarmId::SequenceNotFound,
+                       fmt::format("N{} in {}", startLabel, p->displayName()));
+  }
   enter(p, FrameKind::Sub, repeats, codeCalled);
+  frames_.back().pc = frames_.back().startPc = static_cast<uint32_t>(start);
   ++subDepth_;
 }
 
@@ -195,7 +222,7 @@ void Executor::doReturn(int32_t label) {
   }
   if (f.repeatsLeft > 0 && label < 0) {
     --f.repeatsLeft;
-    f.pc = 0;
+    f.pc = f.startPc;
     if (f.kind != FrameKind::Sub) {
       auto L = static_cast<size_t>(f.level);
       locals_[L] = callArgs_[L];
@@ -221,7 +248,12 @@ void Executor::jumpTo(int32_t label, bool computed) {
   const Block& b = *block_;
   int32_t t = -1;
   if (!computed) {
+    // A literal target that is missing or inside a loop: the alarm comes when the GOTO runs.
+    if (!f.prog->structural.empty()) [[unlikely]]
+      if (const Alarm* a = structuralError(*f.prog, f.pc)) raiseStructural(*a);
     t = f.prog->ops(b).target;
+    if (t < 0) [[unlikely]]
+      throw AlarmError(AlarmId::IllegalMacroSequence, "N" + std::to_string(label) + " not found");
   } else {
     if (label < 1 || label > 99999999)
       throw AlarmError(AlarmId::IllegalMacroSequence, std::to_string(label));
@@ -369,11 +401,26 @@ bool Executor::step() {
                              : o.gotoLabel,
              o.gotoExpr >= 0);
       break;
-    case BlockKind::While:
-      if (o.cond < 0 || evalCond(o.cond)) ++f.pc;
-      else f.pc = static_cast<uint32_t>(o.target);
+    case BlockKind::While: {
+      // A wrong loop number is found when the DO runs; a missing END when the loop is left
+      // (the control looks for the END then), so a loop left by a GOTO needs none.
+      const Alarm* bad = prog.structural.empty() ? nullptr : structuralError(prog, f.pc);
+      if (bad && bad->code != alarmCode(AlarmId::MissingEnd)) raiseStructural(*bad);
+      if (o.cond < 0 || evalCond(o.cond)) {
+        ++f.pc;
+      } else {
+        if (bad) raiseStructural(*bad);
+        if (o.target < 0) [[unlikely]]
+          throw AlarmError(AlarmId::MissingEnd, "DO " + std::to_string(b.loopId));
+        f.pc = static_cast<uint32_t>(o.target);
+      }
       break;
+    }
     case BlockKind::End:
+      if (!prog.structural.empty()) [[unlikely]]
+        if (const Alarm* a = structuralError(prog, f.pc)) raiseStructural(*a);
+      if (o.target < 0) [[unlikely]]
+        throw AlarmError(AlarmId::IllegalLoopNumber, "END " + std::to_string(b.loopId));
       f.pc = static_cast<uint32_t>(o.target);
       break;
     case BlockKind::Print:

@@ -136,6 +136,7 @@ class Executor {
     int8_t level = 0;        // local variable level
     bool codeCalled = false; // entered through a G/M/T code call
     int16_t modalFloor = 0;  // G66 entries at or above this index may trigger here
+    uint32_t startPc = 0;    // where a repeat (L) starts again: M98 Q's block, else 0
   };
   std::vector<Frame> frames_;
   int macroDepth_ = 0, subDepth_ = 0;
@@ -208,8 +209,14 @@ class Executor {
   [[noreturn]] void blockLimitAlarm() const;
   [[noreturn]] void timeLimitAlarm() const;
   void jumpTo(int32_t label, bool computed);
+  // The DO/END or literal GOTO error the compiler found in block `k` of `p` (nullptr: none):
+  // the control finds it when the block runs, so it is raised then (fanuc-decisions.md).
+  const Alarm* structuralError(const Program& p, uint32_t k);
+  [[noreturn]] static void raiseStructural(const Alarm& a);
+  std::unordered_map<const Program*, std::vector<std::pair<uint32_t, uint32_t>>> structuralAt_;
   void doReturn(int32_t label);  // M99 [P]
-  void callSub(const Program* p, int repeats, bool codeCalled);
+  // startLabel >= 0: M98 Q, the subprogram runs from sequence number startLabel.
+  void callSub(const Program* p, int repeats, bool codeCalled, int32_t startLabel = -1);
   void callMacro(const Program* p, int repeats, const std::array<Value, 33>& args,
                  const std::array<double, 33>& scale, FrameKind kind, bool codeCalled);
   const Program* findProgram(int32_t number, int32_t nameIdx);

@@ -652,7 +652,12 @@ void Executor::programControl(Words& w, bool moved) {
     if (m == 98) {
       int32_t p = w.has('P') ? integerWord(w, 'P') : -1;
       int repeats = w.has('L') ? integerWord(w, 'L') : 1;
-      if (p < 0 && w.nameIdx < 0) throw AlarmError(AlarmId::ProgramNotFound, "M98 without P");
+      // M98 Q (0i-F/30i): from sequence number Q of program P, or of this program without P.
+      const int32_t q = w.has('Q') ? integerWord(w, 'Q') : -1;
+      if (w.has('Q') && (q < 1 || q > 99999999))
+        throw AlarmError(AlarmId::SequenceNotFound, fmt::format("M98 Q{}", q));
+      if (p < 0 && w.nameIdx < 0 && q < 0)
+        throw AlarmError(AlarmId::ProgramNotFound, "M98 without P");
       if (!w.has('L') && p > 9999 && setup_.programNumberDigits == 4) {
         // M98 Pxxxxnnnn: repeat count in front of a four-digit program number (with 8-digit
         // program numbers the repeat count can only be given with L).
@@ -661,7 +666,7 @@ void Executor::programControl(Words& w, bool moved) {
       }
       if (repeats < 0 || repeats > 9999) throw AlarmError(AlarmId::IntegerOverflow, "L");
       if (repeats == 0) return;
-      callSub(findProgram(p, w.nameIdx), repeats, false);
+      callSub(p < 0 && w.nameIdx < 0 ? f.prog : findProgram(p, w.nameIdx), repeats, false, q);
       return;
     }
     if (m == 99) {
