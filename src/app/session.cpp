@@ -55,7 +55,9 @@ void Session::addProgramText(std::string_view text, const std::string& name) {
   ownPrograms_.insert(ownPrograms_.end(), progs.begin(), progs.end());
 }
 
-void Session::addLibrary(const std::string& dir) { store_.addFolder(dir); }
+void Session::addLibrary(const std::string& dir, std::string_view except) {
+  store_.addFolder(dir, except);
+}
 
 void Session::addBundledMacros() {
   std::string dir = bundledMacrosFolder();

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -32,7 +33,7 @@ class Session {
   // for run(): check() and the web viewer need the whole program.
   void streamMainProgram(ProgramStore::StreamOptions options) { stream_ = options; }
   void addProgramText(std::string_view text, const std::string& name);
-  void addLibrary(const std::string& dir);
+  void addLibrary(const std::string& dir, std::string_view except = {});
   void addBundledMacros();
 
   const Setup& setup() const { return setup_; }

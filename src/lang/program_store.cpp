@@ -112,13 +112,13 @@ std::vector<const Program*> ProgramStore::addTooLarge(const std::string& path, u
   return {&programs_.back()};
 }
 
-void ProgramStore::addFolder(const std::string& dir) {
+void ProgramStore::addFolder(const std::string& dir, std::string_view except) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + ": not a folder");
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (!e.is_regular_file()) continue;
+    if (!e.is_regular_file() || (!except.empty() && e.path().filename() == except)) continue;
     std::string ext = e.path().extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext == ".nc" || ext == ".tap" || ext == ".txt" || ext == ".min" || ext == ".cnc" ||

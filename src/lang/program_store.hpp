@@ -38,8 +38,9 @@ class ProgramStore {
   void rewindStreams();
   // Same for text already in memory (tests, the server).
   std::vector<const Program*> addText(std::string_view text, const std::string& name);
-  // Every program file in a folder (not recursive), in name order.
-  void addFolder(const std::string& dir);
+  // Every program file in a folder (not recursive), in name order, but the one named
+  // `except` (a file whose text was added already, as the web viewer's editor text).
+  void addFolder(const std::string& dir, std::string_view except = {});
 
   const Program* byNumber(int32_t number) const;
   const Program* byName(std::string_view name) const;

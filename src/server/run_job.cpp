@@ -96,7 +96,9 @@ nlohmann::json runJob(const nlohmann::json& request) {
     if (!session.main()) return failure("no program in the text");
     if (request.contains("libs") && request["libs"].is_array())
       for (const auto& dir : request["libs"])
-        if (dir.is_string()) session.addLibrary(dir.get<std::string>());
+        // The program's own file is in its folder: the text sent is that file (edited or
+        // not), not a second copy of its programs.
+        if (dir.is_string()) session.addLibrary(dir.get<std::string>(), name);
     session.addBundledMacros();
 
     // A setup with [stock] gets its stock simulated, as `ncvm run --stock-out` would, but

@@ -138,6 +138,24 @@ TEST(RunJob, TraceAndStepsLineForLine) {
   EXPECT_EQ(r["machine"]["kind"], "mill");
 }
 
+// The page sends the editor's text with the name and folder of the file it came from: that
+// file is the text, not a second copy of its programs ("O0202 is also in ..."), while the
+// folder's other files still give the subprograms.
+TEST(RunJob, TheProgramsOwnFileIsNotLoadedTwice) {
+  TempDir dir;
+  const std::string main = "O0202\nG00 X1.\nM98 P9001\nM30\n";
+  write(dir.path / "main.nc", main);
+  write(dir.path / "sub.nc", "O9001\nG00 X2.\nM99\n");
+  json r = runJob({{"program", main}, {"name", "main.nc"}, {"libs", {dir.path.string()}}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  EXPECT_EQ(r["load_warnings"], json::array()) << r["load_warnings"];
+  EXPECT_EQ(r["state"]["end"], "M30");
+  EXPECT_EQ(countLines(r["trace"].get<std::string>()), 2u);  // both moves, the sub's too
+  // Another name: the folder's main.nc is a second copy, and said so.
+  json other = runJob({{"program", main}, {"name", "copy.nc"}, {"libs", {dir.path.string()}}});
+  ASSERT_EQ(other["load_warnings"].size(), 1u) << other.dump();
+}
+
 TEST(RunJob, AlarmHasItsLineAndColumn) {
   json r = runJob({{"program", "O0001\nG00 X1.\n#1=0\n#2=1/#1\nM30\n"}, {"name", "a.nc"}});
   ASSERT_TRUE(r["ok"].get<bool>());

@@ -1,5 +1,6 @@
-// Fanuc program text -> HTML with one span per token, for the editor overlay. A tokenizer,
-// not a parser: the server's check and run report the real errors.
+// Fanuc / Custom Macro B program text split into tokens: one tokenizer for the editor's
+// language mode (fanuc-mode.js) and the tests. A tokenizer, not a parser: the server's check
+// and run report the real errors. Lines are independent (a Fanuc comment ends with its block).
 const KEYWORDS = new Set([
   'IF', 'THEN', 'GOTO', 'WHILE', 'DO', 'END', 'EQ', 'NE', 'GT', 'GE', 'LT', 'LE', 'AND', 'OR', 'XOR',
   'MOD', 'SIN', 'COS', 'TAN', 'ASIN', 'ACOS', 'ATAN', 'SQRT', 'ABS', 'ROUND', 'FIX', 'FUP', 'BIN', 'BCD',
@@ -10,66 +11,51 @@ export function escapeHtml(s) {
   return s.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 }
 
+const at = (re, line, i) => {
+  re.lastIndex = i;
+  const m = re.exec(line);
+  return m ? m[0].length : 0;
+};
+const SKIP = /\/\d?/y, VAR = /#\d+|#(?=\[)/y, WORD = /[A-Z]{2,}/iy, LABEL = /[OoNn]\d+/y;
+const GCODE = /[Gg]\s*\d+(\.\d)?/y, MCODE = /[Mm]\s*\d+/y, ADDR = /[A-Za-z]\s*[-+]?(\d+\.?\d*|\.\d+)/y;
+const NUM = /\d+\.?\d*|\.\d+/y, NAME = /<[^>]*>/y, WS = /\s+/y;
+
+// The token at line[i]: {cls, end}. `head`: only blanks and a block skip before it, where an
+// O number names a program and an N number is a sequence number.
+export function nextToken(line, i, head) {
+  const c = line[i];
+  let n;
+  if (c === '(') {
+    const close = line.indexOf(')', i);
+    return { cls: 'comment', end: close < 0 ? line.length : close + 1 };
+  }
+  if (c === ';') return { cls: 'comment', end: line.length };
+  if (c === '%') return { cls: 'percent', end: i + 1 };
+  if ((n = at(WS, line, i))) return { cls: 'ws', end: i + n };
+  if (c === '/' && head) return { cls: 'skip', end: i + at(SKIP, line, i) };
+  if ((n = at(VAR, line, i))) return { cls: 'var', end: i + n };
+  if ((n = at(WORD, line, i)) && KEYWORDS.has(line.slice(i, i + n).toUpperCase())) return { cls: 'kw', end: i + n };
+  if (head && (n = at(LABEL, line, i))) return { cls: /[Oo]/.test(c) ? 'prog' : 'seq', end: i + n };
+  if ((n = at(GCODE, line, i))) return { cls: 'g', end: i + n };
+  if ((n = at(MCODE, line, i))) return { cls: 'm', end: i + n };
+  if ((n = at(ADDR, line, i))) return { cls: 'addr', end: i + n };
+  if ((n = at(NUM, line, i))) return { cls: 'num', end: i + n };
+  if ((n = at(NAME, line, i))) return { cls: 'prog', end: i + n };
+  return { cls: /[A-Za-z]/.test(c) ? 'addr' : 'op', end: i + 1 };
+}
+
+// Whether a token keeps the block's head open (blanks and a block skip do).
+export const keepsHead = (cls) => cls === 'ws' || cls === 'skip';
+
 // Returns [{cls, text}] covering the whole line.
 export function tokenize(line) {
   const out = [];
-  let i = 0;
-  const push = (cls, text) => out.push({ cls, text });
-  while (i < line.length) {
-    const c = line[i];
-    const rest = line.slice(i);
-    let m;
-    if (c === '(') {
-      const close = line.indexOf(')', i);
-      const end = close < 0 ? line.length : close + 1;
-      push('comment', line.slice(i, end));
-      i = end;
-    } else if (c === ';') {
-      push('comment', rest);
-      i = line.length;
-    } else if (c === '%') {
-      push('percent', c);
-      i++;
-    } else if (c === '/' && out.every((t) => t.cls === 'ws')) {
-      push('skip', (m = /^\/\d?/.exec(rest))[0]);
-      i += m[0].length;
-    } else if ((m = /^#\d+/.exec(rest)) || (m = /^#(?=\[)/.exec(rest))) {
-      push('var', m[0]);
-      i += m[0].length;
-    } else if ((m = /^[A-Z]{2,}/i.exec(rest)) && KEYWORDS.has(m[0].toUpperCase())) {
-      push('kw', m[0]);
-      i += m[0].length;
-    } else if ((m = /^[OoNn]\d+/.exec(rest)) && out.every((t) => t.cls === 'ws' || t.cls === 'skip')) {
-      push(/^[Oo]/.test(m[0]) ? 'prog' : 'seq', m[0]);
-      i += m[0].length;
-    } else if ((m = /^[Gg]\s*\d+(\.\d)?/.exec(rest))) {
-      push('g', m[0]);
-      i += m[0].length;
-    } else if ((m = /^[Mm]\s*\d+/.exec(rest))) {
-      push('m', m[0]);
-      i += m[0].length;
-    } else if ((m = /^[A-Za-z]\s*[-+]?(\d+\.?\d*|\.\d+)/.exec(rest))) {
-      push('addr', m[0]);
-      i += m[0].length;
-    } else if ((m = /^(\d+\.?\d*|\.\d+)/.exec(rest))) {
-      push('num', m[0]);
-      i += m[0].length;
-    } else if ((m = /^<[^>]*>/.exec(rest))) {
-      push('prog', m[0]);
-      i += m[0].length;
-    } else if ((m = /^\s+/.exec(rest))) {
-      push('ws', m[0]);
-      i += m[0].length;
-    } else {
-      push(/[A-Za-z]/.test(c) ? 'addr' : 'op', c);
-      i++;
-    }
+  let head = true;
+  for (let i = 0; i < line.length; ) {
+    const t = nextToken(line, i, head);
+    out.push({ cls: t.cls, text: line.slice(i, t.end) });
+    head = head && keepsHead(t.cls);
+    i = t.end;
   }
   return out;
-}
-
-export function highlightLine(line) {
-  return tokenize(line)
-    .map((t) => (t.cls === 'ws' ? escapeHtml(t.text) : `<span class="t-${t.cls}">${escapeHtml(t.text)}</span>`))
-    .join('');
 }

@@ -4,6 +4,8 @@ import * as api from './api.js';
 import { Editor } from './editor.js';
 import { View3D } from './view3d.js';
 import { buildModel, toolAt } from './model.js';
+import { Workspace } from './workspace.js';
+import { PathLink } from './link.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -11,7 +13,9 @@ const SUB = 10; // slider positions per event: scrubbing shows a move part-way
 
 const editor = new Editor($('editor'));
 const view = new View3D($('view'));
-const ui = { model: null, p: 0, source: { root: null, dir: '', name: 'program.nc' }, stale: false };
+const link = new PathLink(view, (line) => editor.selectLine(line));
+editor.onCursorLine = (line) => link.highlightLine(line);
+const ui = { model: null, p: 0, source: { kind: 'new', root: null, dir: '', name: 'program.nc' }, stale: false };
 
 function setStatus(text, cls = '') {
   $('status').textContent = text;
@@ -21,9 +25,9 @@ function setStatus(text, cls = '') {
 // Tabs: each .tabs bar switches the panes named by its buttons.
 for (const bar of document.querySelectorAll('.tabs')) {
   bar.addEventListener('click', (e) => {
-    const b = e.target.closest('button');
+    const b = e.target.closest('button[data-tab]');
     if (!b) return;
-    for (const x of bar.querySelectorAll('button')) {
+    for (const x of bar.querySelectorAll('button[data-tab]')) {
       x.classList.toggle('active', x === b);
       $(x.dataset.tab).classList.toggle('active', x === b);
     }
@@ -53,8 +57,9 @@ async function openFile(root, path) {
   if (!f.ok) return setStatus(f.error, 'bad');
   editor.text = f.text;
   $('setup-text').value = f.setup || '';
-  ui.source = { root, dir: f.dir, name: path.split('/').pop() };
+  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop() };
   $('files').value = `${root}|${path}`;
+  workspace.opened(sourceKey());
   setStatus(`${path}${f.setup_path ? ` (setup ${f.setup_path})` : ''}`);
   clearRun();
 }
@@ -70,12 +75,37 @@ $('files').addEventListener('change', (e) => {
   if (root && path) openFile(root, path);
   else {
     editor.text = 'O0001\n';
-    ui.source = { root: null, dir: '', name: 'program.nc' };
+    ui.source = { kind: 'new', root: null, dir: '', name: 'program.nc' };
+    workspace.opened(sourceKey());
     clearRun();
   }
 });
 
+// Where the editor's text came from, as the workspace keeps it (no server folder).
+const sourceKey = () => ({ kind: ui.source.kind, name: ui.source.name, root: ui.source.root, path: ui.source.path });
+
+function openLocal(name, text) {
+  editor.text = text;
+  ui.source = { kind: 'local', root: null, dir: '', name };
+  $('files').value = '';
+  workspace.opened(sourceKey());
+  setStatus(`${name} (local file, ${editor.lineCount} lines)`);
+  clearRun();
+}
+
+const workspace = new Workspace({
+  editor,
+  setupText: $('setup-text'),
+  openServer: (root, path) => openFile(root, path),
+  openLocal,
+  source: sourceKey,
+  status: setStatus,
+});
+$('find').addEventListener('click', () => editor.find());
+$('goto-line').addEventListener('click', () => editor.goToLine());
+
 editor.onChange = () => {
+  workspace.changed();
   if (ui.model) {
     ui.stale = true;
     setStatus('edited: Run again to update', 'warn');
@@ -106,6 +136,8 @@ async function run() {
   for (const w of [...answer.check.warnings, ...s.warnings]) if (mine(w.file)) marks.push({ line: w.line, kind: 'warning', text: `${w.code} ${w.text}` });
   editor.setMarks(marks);
   view.setModel(model);
+  link.setModel(model, ui.source.name);
+  link.highlightLine(editor.cursorLine);
   $('scrub').max = model.events.length * SUB;
   renderMessages($('p-messages'), model, pick);
   renderTime($('p-time'), model);
@@ -179,10 +211,27 @@ document.addEventListener('keydown', (e) => {
   if (inf.setup) $('setup-text').placeholder = `# empty: the server's --setup ${inf.setup_name}`;
   await loadFiles();
   renderVariables($('p-vars'), null);
-  if (inf.start) await openFile(inf.start.root, inf.start.path);
+  const draft = await workspace.draft();
+  const started = (s) => inf.start && s?.kind === 'server' && s.root === inf.start.root && s.path === inf.start.path;
+  if (draft?.source && (draft.text !== null || draft.source.kind !== 'new') && (!inf.start || started(draft.source))) await restore(draft);
+  else if (inf.start) await openFile(inf.start.root, inf.start.path);
   else {
     editor.text = 'O0001 (NEW PROGRAM)\nG21 G90 G17 G40 G80\nG00 X0 Y0 Z5.\nG01 Z-1. F100.\nX50.\nY30.\nM30\n';
     setStatus('pick an example or write a program, then Run');
   }
   document.body.dataset.ready = 'true';
 })();
+
+// The last visit's program: its edited text when it was edited, else the file again.
+async function restore(d) {
+  const s = d.source;
+  if (s.kind === 'server') await openFile(s.root, s.path);
+  else if (s.kind === 'local' && d.text === null) await workspace.openRecent(s);
+  else ui.source = { kind: s.kind, root: null, dir: '', name: s.name };
+  if (d.text !== null) {
+    editor.text = d.text;
+    if (d.setup !== null) $('setup-text').value = d.setup;
+    workspace.save();
+    setStatus(`${s.name}: your edits of ${new Date(d.time).toLocaleString()} (not yet run)`, 'warn');
+  }
+}

@@ -87,7 +87,7 @@ const litPixels = () =>
 
 test('an example loads, runs, and the 3D view draws its toolpath', async () => {
   await openExample('macro-basics/bolt-circle.nc');
-  assert.match(await page.textContent('#editor .hl'), /O0100/);
+  assert.match(await page.textContent('#editor .cm-content'), /O0100/);
   // Fanuc highlighting: G codes and macro keywords are tokens of their own.
   assert.ok((await page.locator('#editor .t-g').count()) > 5);
   assert.ok((await page.locator('#editor .t-kw').count()) > 5);
@@ -113,7 +113,7 @@ test('single-block stepping highlights the block and updates the variables', asy
     await page.click('#fwd');
     const info = await page.textContent('#stepinfo');
     const line = Number(/:(\d+)/.exec(info)[1]);
-    const current = await page.getAttribute('#editor .hl .line.current', 'data-line');
+    const current = await page.getAttribute('#editor .cm-current-block', 'data-line');
     assert.equal(Number(current), line, `the highlighted line is not the block of "${info}"`);
     const vars = await page.textContent('#vars-local');
     if (previous !== null && vars !== previous) changes++;
@@ -137,13 +137,14 @@ test('single-block stepping highlights the block and updates the variables', asy
 test('an alarm is marked on its line', async () => {
   await page.selectOption('#files', '');
   await tab('editor');
-  await page.fill('#editor textarea', 'O0001 (ALARM TEST)\nG90 G00 X10. Y10.\n#1=0\nG01 X[20/#1] F100.\nM30\n');
-  await page.dispatchEvent('#editor textarea', 'input');
+  await page.click('#editor .cm-content');
+  await page.keyboard.press('Control+A');
+  await page.keyboard.insertText('O0001 (ALARM TEST)\nG90 G00 X10. Y10.\n#1=0\nG01 X[20/#1] F100.\nM30\n');
   await runAndWait();
   assert.match(await page.textContent('#status'), /PS0112/);
-  const marked = await page.locator('#editor .gutter .ln.alarm').evaluateAll((els) => els.map((e) => e.dataset.line));
-  assert.deepEqual(marked, ['4']);
-  assert.ok(await page.locator('#editor .hl .line.alarm[data-line="4"]').count());
+  const marked = await page.evaluate(() => document.getElementById('editor').editor.marks().map((m) => `${m.line} ${m.kind}`));
+  assert.deepEqual(marked, ['4 alarm']);
+  assert.ok(await page.locator('#editor .cm-lintRange-error').count());
   await tab('p-messages');
   assert.match(await page.textContent('#p-messages'), /PS0112/);
   await shot('alarm');
