@@ -21,6 +21,7 @@
 #include "cli/command_line.hpp"
 #include "cli/serve_options.hpp"
 #include "core/alarm.hpp"
+#include "core/program_files.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
 #include "report/html_report.hpp"
@@ -342,6 +343,19 @@ int sweepCommand(const CommonOptions& o, const std::vector<std::string>& varies,
   return kExitOk;
 }
 
+// `ncvm list DIR...`: every program file under the folders and the setup it runs with
+// (core/program_files.hpp), one "PROGRAM<TAB>SETUP" line each ("-": the default machine).
+// `make demo` runs what this lists, so the demo, `ncvm serve` and the docs share one rule.
+int listCommand(const std::vector<std::string>& dirs) {
+  constexpr int kListDepth = 6;
+  for (const auto& dir : dirs)
+    for (const auto& prog : programFilesUnder(dir, kListDepth)) {
+      const auto setup = setupFileFor(prog);
+      fmt::print("{}\t{}\n", prog.string(), setup.empty() ? std::string("-") : setup.string());
+    }
+  return kExitOk;
+}
+
 void printAlarmTable() {
   fmt::print("| code | message | meaning |\n|---|---|---|\n");
   for (const auto& a : alarmTable()) fmt::print("| {} | {} | {} |\n", alarmCode(a.id), a.message, a.meaning);
@@ -454,6 +468,14 @@ int main(int argc, char** argv) {
   worker->group("");
   worker->add_option("--memory", workerMemory);
 
+  std::vector<std::string> listDirs;
+  auto* list = app.add_subcommand(
+      "list",
+      "list the program files under DIR and the setup each one runs with (as make demo runs them)");
+  list->add_option("DIR", listDirs, "folder(s) to list")
+      ->required()
+      ->check(CLI::ExistingDirectory)
+      ->type_name("DIR");
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
@@ -466,6 +488,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return compareCommand(compareOpts, programA, programB, compareJsonOut);
     if (serve->parsed()) return startServer(argc, argv);
     if (worker->parsed()) return server::workerMain(workerMemory);
+    if (list->parsed()) return listCommand(listDirs);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();
     return kExitOk;
