@@ -27,6 +27,7 @@
 #include "report/html_report.hpp"
 #include "report/trace_writer.hpp"
 #include "server/worker.hpp"
+#include "sim/deviation.hpp"
 
 namespace {
 
@@ -179,7 +180,9 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     if (!statePath.empty()) fmt::format_to(outAt, "  state: {}\n", statePath);
     if (r.stock.is_object()) {
       const auto& st = r.stock;
-      if (st.contains("deviation") && st["deviation"].is_object())
+      if (st.contains("deviation") && !notMeasuredText(st["deviation"]).empty())
+        fmt::format_to(outAt, "  stock: deviation {}\n", notMeasuredText(st["deviation"]));
+      else if (st.contains("deviation") && st["deviation"].is_object())
         fmt::format_to(outAt, "  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % within {}\n",
                    st["deviation"]["max"].get<double>(), st["deviation"]["max_excess"].get<double>(),
                    st["deviation"]["max_gouge"].get<double>(), st["deviation"]["mean"].get<double>(),
