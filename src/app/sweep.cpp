@@ -42,6 +42,7 @@ std::string folderName(const std::vector<SweepAxis>& axes, const std::vector<std
 }
 
 std::string num(const nlohmann::json& j, const char* key, const char* fmtSpec) {
+  if (j.is_object() && !j.value("measured", true)) return "not measured";
   if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return "-";
   return fmt::format(fmt::runtime(fmtSpec), j[key].get<double>());
 }
@@ -111,7 +112,8 @@ std::vector<SweepRow> runSweep(
 bool sweepRowClean(const SweepRow& r) {
   const auto& st = r.stock;
   return r.alarm.empty() && st.is_object() && st.contains("uncut") && st["uncut"].is_object() &&
-         st["uncut"]["area"].get<double>() == 0 && st["collisions"].empty();
+         st["uncut"]["area"].is_number() && st["uncut"]["area"].get<double>() == 0 &&
+         st["collisions"].empty();
 }
 
 std::string sweepMarkdown(const std::vector<SweepAxis>& axes, const std::vector<SweepRow>& rows) {
@@ -129,8 +131,9 @@ std::string sweepMarkdown(const std::vector<SweepAxis>& axes, const std::vector<
     nlohmann::json uncut = st.is_object() && st.contains("uncut") ? st["uncut"] : nlohmann::json();
     nlohmann::json dev =
         st.is_object() && st.contains("deviation") ? st["deviation"] : nlohmann::json();
-    std::string pct =
-        uncut.is_object() ? fmt::format("{:.1f}", 100 * uncut["share"].get<double>()) : "-";
+    std::string pct = uncut.is_object() && uncut["share"].is_number()
+                          ? fmt::format("{:.1f}", 100 * uncut["share"].get<double>())
+                          : num(uncut, "share", "{:.1f}");
     std::string coll =
         st.is_object() && st.contains("collisions") ? std::to_string(st["collisions"].size()) : "-";
     bool ok = sweepRowClean(r);

@@ -21,11 +21,13 @@
 #include "cli/command_line.hpp"
 #include "cli/serve_options.hpp"
 #include "core/alarm.hpp"
+#include "core/program_files.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
 #include "report/html_report.hpp"
 #include "report/trace_writer.hpp"
 #include "server/worker.hpp"
+#include "sim/deviation.hpp"
 
 namespace {
 
@@ -178,7 +180,9 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     if (!statePath.empty()) fmt::format_to(outAt, "  state: {}\n", statePath);
     if (r.stock.is_object()) {
       const auto& st = r.stock;
-      if (st.contains("deviation") && st["deviation"].is_object())
+      if (st.contains("deviation") && !notMeasuredText(st["deviation"]).empty())
+        fmt::format_to(outAt, "  stock: deviation {}\n", notMeasuredText(st["deviation"]));
+      else if (st.contains("deviation") && st["deviation"].is_object())
         fmt::format_to(outAt, "  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % within {}\n",
                    st["deviation"]["max"].get<double>(), st["deviation"]["max_excess"].get<double>(),
                    st["deviation"]["max_gouge"].get<double>(), st["deviation"]["mean"].get<double>(),
@@ -342,6 +346,19 @@ int sweepCommand(const CommonOptions& o, const std::vector<std::string>& varies,
   return kExitOk;
 }
 
+// `ncvm list DIR...`: every program file under the folders and the setup it runs with
+// (core/program_files.hpp), one "PROGRAM<TAB>SETUP" line each ("-": the default machine).
+// `make demo` runs what this lists, so the demo, `ncvm serve` and the docs share one rule.
+int listCommand(const std::vector<std::string>& dirs) {
+  constexpr int kListDepth = 6;
+  for (const auto& dir : dirs)
+    for (const auto& prog : programFilesUnder(dir, kListDepth)) {
+      const auto setup = setupFileFor(prog);
+      fmt::print("{}\t{}\n", prog.string(), setup.empty() ? std::string("-") : setup.string());
+    }
+  return kExitOk;
+}
+
 void printAlarmTable() {
   fmt::print("| code | message | meaning |\n|---|---|---|\n");
   for (const auto& a : alarmTable()) fmt::print("| {} | {} | {} |\n", alarmCode(a.id), a.message, a.meaning);
@@ -454,6 +471,14 @@ int main(int argc, char** argv) {
   worker->group("");
   worker->add_option("--memory", workerMemory);
 
+  std::vector<std::string> listDirs;
+  auto* list = app.add_subcommand(
+      "list",
+      "list the program files under DIR and the setup each one runs with (as make demo runs them)");
+  list->add_option("DIR", listDirs, "folder(s) to list")
+      ->required()
+      ->check(CLI::ExistingDirectory)
+      ->type_name("DIR");
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
@@ -466,6 +491,7 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return compareCommand(compareOpts, programA, programB, compareJsonOut);
     if (serve->parsed()) return startServer(argc, argv);
     if (worker->parsed()) return server::workerMain(workerMemory);
+    if (list->parsed()) return listCommand(listDirs);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();
     return kExitOk;

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/program_files.hpp"
 #include "lang/line_chunks.hpp"
 
 namespace ncvm {
@@ -119,11 +120,7 @@ void ProgramStore::addFolder(const std::string& dir, std::string_view except) {
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     if (!e.is_regular_file() || (!except.empty() && e.path().filename() == except)) continue;
-    std::string ext = e.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    if (ext == ".nc" || ext == ".tap" || ext == ".txt" || ext == ".min" || ext == ".cnc" ||
-        (ext.empty() && e.path().filename().string().rfind('O', 0) == 0))
-      files.push_back(e.path());
+    if (isProgramFileName(e.path())) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   for (const auto& f : files) addFile(f.string());

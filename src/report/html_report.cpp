@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "sim/deviation.hpp"
+
 namespace ncvm {
 
 namespace {
@@ -140,7 +142,10 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
         h += "\n<figcaption>" + escape(p.value("title", file)) + "</figcaption>\n</figure>\n";
       }
     }
-    if (st.contains("deviation") && st["deviation"].is_object()) {
+    if (st.contains("deviation") && !notMeasuredText(st["deviation"]).empty()) {
+      h += "<h3>Deviation from the target</h3>\n<p class=\"not-measured\">Deviation " +
+           escape(notMeasuredText(st["deviation"])) + ".</p>\n";
+    } else if (st.contains("deviation") && st["deviation"].is_object()) {
       const auto& d = st["deviation"];
       h += "<h3>Deviation from the target</h3>\n<table>\n";
       h += "<tr><th>tolerance</th><th>max</th><th>mean</th><th>max excess</th><th>max "

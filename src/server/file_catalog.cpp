@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/program_files.hpp"
 #include "server/safe_path.hpp"
 
 namespace ncvm::server {
@@ -13,13 +14,6 @@ namespace fs = std::filesystem;
 namespace {
 constexpr size_t kMaxListed = 1000;
 constexpr int kMaxDepth = 6;
-
-bool isProgram(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".nc";
-}
 
 std::optional<std::string> slurp(const fs::path& p, uint64_t maxBytes) {
   std::error_code ec;
@@ -47,14 +41,11 @@ const Root* FileCatalog::find(const std::string& name) const {
 }
 
 std::string setupFor(const Root& root, const std::string& programPath) {
-  fs::path p(programPath);
-  fs::path own = p;
-  own.replace_extension(".toml");
-  fs::path folder = p.parent_path() / "setup.toml";
-  for (const fs::path& c : {own, folder})
-    if (auto full = resolveInside(root.path, c.generic_string());
-        full && fs::is_regular_file(*full))
-      return c.generic_string();
+  const fs::path p(programPath);
+  for (const auto& name : setupCandidates(p)) {
+    const std::string c = (p.parent_path() / name).generic_string();
+    if (auto full = resolveInside(root.path, c); full && fs::is_regular_file(*full)) return c;
+  }
   return {};
 }
 
@@ -69,7 +60,7 @@ nlohmann::json FileCatalog::list() const {
           end;
       for (; !ec && it != end && files.size() < kMaxListed; it.increment(ec)) {
         if (it.depth() >= kMaxDepth) it.disable_recursion_pending();
-        if (!isProgram(it->path())) continue;
+        if (!isProgramFileName(it->path())) continue;
         std::string rel = fs::relative(it->path(), base, ec).generic_string();
         // Listed only what read() would serve: a symlink out of the root is not.
         if (!ec && resolveInside(base, rel) && fs::is_regular_file(it->path(), ec))

@@ -22,7 +22,8 @@ class FileCatalog {
   const std::vector<Root>& roots() const { return roots_; }
   const Root* find(const std::string& name) const;
 
-  // {"roots": [{"name", "files": [{"path", "setup"}]}]}: the .nc files of each root (at most
+  // {"roots": [{"name", "files": [{"path", "setup"}]}]}: the program files of each root
+  // (core/program_files.hpp) (at most
   // 1000 per root, 6 folders deep), with the setup each one runs with.
   nlohmann::json list() const;
 
@@ -39,8 +40,8 @@ class FileCatalog {
   std::vector<Root> roots_;
 };
 
-// The setup a program runs with, as `make demo` finds it: PROGRAM.toml beside it, else the
-// folder's setup.toml (a path relative to the root, or empty).
+// The setup a program runs with, by the rule of core/program_files.hpp that `make demo` uses
+// too (a path relative to the root, or empty).
 std::string setupFor(const Root& root, const std::string& programPath);
 
 }  // namespace ncvm::server

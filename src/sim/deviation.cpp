@@ -44,7 +44,30 @@ nlohmann::json deviationJson(const std::vector<DeviationSample>& samples, double
     bands.push_back(b);
   }
   j["bands"] = bands;
+  j["measured"] = true;
+  if (!(total > 0)) markNotMeasured(j, "no point of the target was measured");
   return j;
+}
+
+void markNotMeasured(nlohmann::json& summary, const std::string& why) {
+  static const char* kStatistics[] = {"max",           "mean",        "max_excess", "max_gouge",
+                                      "in_tolerance",  "mean_signed", "area",       "uncut_area",
+                                      "uncut_share",   "gouge_area",  "share",      "at_max",
+                                      "at_max_excess", "at_max_gouge"};
+  for (const char* key : kStatistics)
+    if (summary.contains(key)) summary[key] = nullptr;
+  if (summary.contains("bands"))
+    for (auto& b : summary["bands"]) {
+      b["share"] = nullptr;
+      if (b.contains("area")) b["area"] = nullptr;
+    }
+  summary["measured"] = false;
+  summary["not_measured"] = why;
+}
+
+std::string notMeasuredText(const nlohmann::json& summary) {
+  if (!summary.is_object() || summary.value("measured", true)) return {};
+  return "not measured (" + summary.value("not_measured", std::string("no sample")) + ")";
 }
 
 const char* deviationColour(double d, double tolerance) {

@@ -233,7 +233,11 @@ nlohmann::json LatheStock::finish(const std::string& outDir) {
     a["deviation"]["at_max"] = where(worst);
     a["deviation"]["at_max_excess"] = where(excess);
     a["deviation"]["at_max_gouge"] = where(gouge);
-    if (target_.empty()) a["notes"].push_back("target: no feed move of the block range ran");
+    if (target_.empty()) {
+      a["notes"].push_back("target: no feed move of the block range ran");
+      markNotMeasured(a["deviation"], "no feed move of the target's " + targetSource_ +
+                                          " ran, so the target has no contour");
+    }
     a["target"]["reachable"] = setup_.target.reachable;
     if (setup_.target.reachable == "nose") {
       a["target"]["nose_radius"] = targetNoseRadius();

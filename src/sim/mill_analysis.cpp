@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sim/deviation.hpp"
+
 namespace ncvm {
 
 double targetHeight(const HeightField& stock, const MillTarget& target, int i, int j) {
@@ -80,19 +82,22 @@ nlohmann::json MillAnalysis::toJson() const {
                          {"share", cells ? static_cast<double>(b.cells) / n : 0.0},
                          {"area", static_cast<double>(b.cells) * cellArea}});
   double total = n * cellArea;
-  return {{"tolerance", tolerance},
-          {"samples", cells},
-          {"max", std::max(maxExcess, maxGouge)},
-          {"mean", meanAbsDeviation},
-          {"max_excess", maxExcess},
-          {"max_gouge", maxGouge},
-          {"in_tolerance", cells ? static_cast<double>(bands[4].cells) / n : 1.0},
-          {"bands", bandsJson},
-          {"mean_signed", meanDeviation},
-          {"area", total},
-          {"uncut_area", uncutArea()},
-          {"uncut_share", total > 0 ? uncutArea() / total : 0.0},
-          {"gouge_area", gougeArea()}};
+  nlohmann::json j = {{"tolerance", tolerance},
+                      {"samples", cells},
+                      {"max", std::max(maxExcess, maxGouge)},
+                      {"mean", meanAbsDeviation},
+                      {"max_excess", maxExcess},
+                      {"max_gouge", maxGouge},
+                      {"in_tolerance", cells ? static_cast<double>(bands[4].cells) / n : 1.0},
+                      {"bands", bandsJson},
+                      {"mean_signed", meanDeviation},
+                      {"area", total},
+                      {"uncut_area", uncutArea()},
+                      {"uncut_share", total > 0 ? uncutArea() / total : 0.0},
+                      {"gouge_area", gougeArea()},
+                      {"measured", true}};
+  if (cells == 0) markNotMeasured(j, "no cell of the stock lies under the target");
+  return j;
 }
 
 }  // namespace ncvm

@@ -9,6 +9,7 @@
 #include "report/atomic_file.hpp"
 #include "report/mill_pictures.hpp"
 #include "report/stl_writer.hpp"
+#include "sim/deviation.hpp"
 #include "sim/heightfield_io.hpp"
 #include "sim/heightfield_probe.hpp"
 
@@ -273,6 +274,7 @@ nlohmann::json MillStock::analysis(const std::string& outDir) {
         {"area", a.uncutArea()},
         {"share", a.cells ? a.uncutArea() / (static_cast<double>(a.cells) * a.cellArea) : 0.0},
         {"regions", regions}};
+    if (a.cells == 0) markNotMeasured(j["uncut"], "no cell of the stock lies under the target");
   }
   nlohmann::json pictures = nlohmann::json::array();
   nlohmann::json files = nlohmann::json::object();

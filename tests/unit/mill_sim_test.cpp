@@ -336,6 +336,21 @@ TEST(MillAnalysis, FacePassUncutAreaAndBands) {
   EXPECT_NEAR(j["uncut_area"].get<double>(), 40.0, 1e-9);
 }
 
+TEST(MillAnalysis, NoCellUnderTheTargetIsNotMeasured) {
+  HeightField f(0, 0, 0.1, 200, 100, 1.0f);
+  MillTarget target;
+  target.z = 0;
+  target.region = std::array<double, 4>{100, 100, 120, 120};  // off the stock
+  MillAnalysis a = analyseMill(f, target);
+  ASSERT_EQ(a.cells, 0u);
+  nlohmann::json j = a.toJson();
+  EXPECT_FALSE(j["measured"].get<bool>());
+  EXPECT_TRUE(j["in_tolerance"].is_null());  // never 100 % within
+  EXPECT_TRUE(j["max"].is_null());
+  EXPECT_TRUE(j["bands"][4]["share"].is_null());
+  EXPECT_NE(j["not_measured"].get<std::string>().find("target"), std::string::npos);
+}
+
 TEST(MillTools, ShapesFromTheSetup) {
   EXPECT_EQ(tool("bull", 10, 5).kind, MillToolKind::Ball);
   EXPECT_NEAR(tool("drill", 10, 0, 90).profile(5), 5, 1e-12);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sim/deviation.hpp"
 #include "sim/lathe_insert.hpp"
 #include "sim/lathe_stock.hpp"
 
@@ -259,4 +260,19 @@ TEST(LatheInsert, HolderRunsAlongXForODToolsAndAlongZForBoringBars) {
   EXPECT_NEAR(b[3], 35.4, 1e-12);
   t.holderLength = 0;  // no holder given
   EXPECT_TRUE(lsim::holderOutline(t, 10).empty());
+}
+
+TEST(DeviationJson, NoSampleIsNotMeasuredNeverAPass) {
+  nlohmann::json j = deviationJson({}, 0.001);
+  EXPECT_EQ(j["samples"].get<size_t>(), 0u);
+  EXPECT_FALSE(j["measured"].get<bool>());
+  EXPECT_TRUE(j["in_tolerance"].is_null());
+  EXPECT_TRUE(j["max"].is_null());
+  EXPECT_TRUE(j["mean"].is_null());
+  for (const auto& b : j["bands"]) EXPECT_TRUE(b["share"].is_null());
+  EXPECT_EQ(notMeasuredText(j), "not measured (no point of the target was measured)");
+  nlohmann::json one = deviationJson({{0.0005, 1.0}}, 0.001);
+  EXPECT_TRUE(one["measured"].get<bool>());
+  EXPECT_DOUBLE_EQ(one["in_tolerance"].get<double>(), 1.0);
+  EXPECT_EQ(notMeasuredText(one), "");
 }

@@ -106,7 +106,8 @@ function stockSummary(st) {
   const u = st.units || '';
   const rows = [['model', `${st.kind}, ${st.cutting_moves ?? '?'} of ${st.moves ?? '?'} moves cut`]];
   const d = st.deviation;
-  if (d) {
+  if (d && d.measured === false) rows.push(['deviation', `not measured (${d.not_measured || 'no sample'})`]);
+  else if (d) {
     rows.push(['deviation max', `${fmt(d.max, 4)} ${u} (excess ${fmt(d.max_excess, 4)}, gouge ${fmt(d.max_gouge, 4)})`]);
     rows.push(['in tolerance', `${fmt(100 * (d.in_tolerance ?? 0), 1)} % of ±${fmt(d.tolerance, 4)} ${u}`]);
   } else rows.push(['deviation', 'no [target]']);
