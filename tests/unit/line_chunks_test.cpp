@@ -226,3 +226,20 @@ TEST(LineChunks, LongProgramAtSeveralBufferSizes) {
     expectSamePrograms(cut.programs[0], whole.programs[0], "long program");
   }
 }
+
+// Random texts of tape marks, comments, headers, filler bytes and blocks: every piece size
+// compiles them as the whole text does (the tape state carries across pieces).
+TEST(LineChunks, RandomTapeTextsCompileAlikeInPieces) {
+  const char* const kParts[] = {"%",      "%\n",    "\n",      "(T)",   "(50%)", "O0001", "O0002",
+                                "X1.",    " ",      "\x1a",    "\r\n",  "#1=2",  "N5",    ";",
+                                "<SUB>",  "G01 Y2", "\xEF\xBB\xBF", "(",   ")",     "%O0003", "M30"};
+  std::mt19937 rng(2426);
+  for (int k = 0; k < 300; ++k) {
+    std::string text;
+    const int n = 1 + static_cast<int>(rng() % 14);
+    for (int p = 0; p < n; ++p) text += kParts[rng() % (sizeof kParts / sizeof kParts[0])];
+    SCOPED_TRACE(text);
+    expectSameForEveryChunk(text);
+    if (::testing::Test::HasFailure()) return;
+  }
+}
