@@ -307,6 +307,8 @@ int batchCommand(const CommonOptions& o, const RunOutputs& dirs, bool quiet, uns
 int checkCommand(const CommonOptions& o, bool json) {
   Session session(makeSetup(o));
   loadPrograms(session, o);
+  // What loading found (a duplicate program, text after the closing '%'), as run prints it.
+  for (const auto& w : session.store().warnings()) fmt::print(stderr, "ncvm: warning: {}\n", w);
   nlohmann::json report = session.check();
   if (json) {
     fmt::print("{}\n", dumpJson(report));

@@ -110,6 +110,7 @@ class Compiler {
   enum class Tape : uint8_t { Before, Inside, Done };
   Tape tape_ = Tape::Before;
   ParsedFile leader_;
+  bool leaderOnlyComments_ = false;  // leader_ is one header-less program of comments
   uint32_t firstMarkLine_ = 0;
 
   uint32_t col() const { return static_cast<uint32_t>(i_ - lineStart_ + 1); }
@@ -236,15 +237,18 @@ ParsedFile Compiler::run() {
 
 void Compiler::finish() {
   finishProgram();
-  // The only '%' had nothing after it: it was the tape end of the program before it.
+  const bool onlyCommentsOpen = out_.programs.size() == 1 && onlyComments();
   if (tape_ != Tape::Before && !leader_.programs.empty() &&
-      (out_.programs.empty() || (out_.programs.size() == 1 && onlyComments()))) {
+      (out_.programs.empty() || onlyCommentsOpen)) {
+    // The only '%' had nothing after it: it was the tape end of the program before it.
     const uint32_t unread = out_.unreadLine;
     out_ = std::move(leader_);
     out_.unreadLine = unread;
+    prog_ = nullptr;
+    if (leaderOnlyComments_) out_.programs.clear();
+  } else if (onlyCommentsOpen) {
+    out_.programs.clear();  // nothing but comments is no program either
   }
-  // Nothing but comments is no program either.
-  if (out_.programs.size() == 1 && onlyComments()) out_.programs.clear();
   if (out_.programs.empty()) addNoProgram();
 }
 
@@ -319,6 +323,7 @@ size_t Compiler::tapeMark(size_t after, size_t e) {
   if (tape_ == Tape::Done) return e;
   // The first '%': what was compiled before it is leader (kept aside: finish()).
   finishProgram();
+  leaderOnlyComments_ = out_.programs.size() == 1 && onlyComments();
   leader_ = std::move(out_);
   out_ = ParsedFile{};
   prog_ = nullptr;

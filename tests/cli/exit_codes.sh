@@ -25,4 +25,23 @@ grep -qE 'alarm.nc:3:[0-9]+: PS0112 ZERO DIVIDE \(N30\)' "$tmp/out" || fail "ala
 
 "$ncvm" check "$dir/alarm.nc" >"$tmp/out"; rc=$?
 [ $rc = 0 ] || fail "check of a program without static errors exit $rc"
+# A file without program text is an alarm (PS9008 with file and line), in run and check; bytes
+# after the closing '%' are not read, and text there is named by a warning in both.
+: >"$tmp/empty.nc"
+"$ncvm" run "$tmp/empty.nc" >"$tmp/out" 2>"$tmp/err"; rc=$?
+[ $rc = 3 ] || fail "empty file exit $rc"
+grep -qE 'empty.nc:1:1: PS9008 NO PROGRAM IN FILE' "$tmp/out" || fail "empty file alarm: $(cat "$tmp/out")"
+printf '%%\n' >"$tmp/percent.nc"
+"$ncvm" check "$tmp/percent.nc" >"$tmp/out"; rc=$?
+[ $rc = 3 ] || fail "check of '%' alone exit $rc"
+printf '%%\nO0001\nG00 X1.\nM30\n%%\n\032' >"$tmp/dos.nc"
+"$ncvm" check "$tmp/dos.nc" >"$tmp/out" 2>"$tmp/err"; rc=$?
+[ $rc = 0 ] || fail "check with a DOS EOF after the closing %: exit $rc $(cat "$tmp/out")"
+[ ! -s "$tmp/err" ] || fail "DOS EOF after the closing % warned: $(cat "$tmp/err")"
+printf 'O0001\nG00 X1.\nM30\n%%\n\032' >"$tmp/trailing.nc"
+"$ncvm" run "$tmp/trailing.nc" >"$tmp/out"; rc=$?
+[ $rc = 0 ] || fail "only a trailing %: exit $rc"
+printf '%%\nO0001\nM30\n%%\nO0002\n' >"$tmp/after.nc"
+"$ncvm" check "$tmp/after.nc" >"$tmp/out" 2>"$tmp/err" || fail "check with text after the closing %"
+grep -q "after.nc:5: text after the closing '%' is not read" "$tmp/err" || fail "no warning: $(cat "$tmp/err")"
 echo "cli exit codes: ok"

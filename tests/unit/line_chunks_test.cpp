@@ -128,7 +128,8 @@ TEST(LineChunks, TapeMarksLeaderCommentsAndByteOrderMark) {
         std::string("(PART)\nO0001\nX1.\n(NOT A LEADER)\nO0002\nX2.\n"),
         std::string("O0001\n(STEPOVER 50%)\nX1.\n"),
         std::string("\xEF\xBB\xBFO0001\nX1. Y2.\n"), std::string(""), std::string("%\n"),
-        std::string("\n\n%\n\n"), std::string("(ONLY A COMMENT)\n")}) {
+        std::string("\n\n%\n\n"), std::string("(ONLY A COMMENT)\n"),
+        std::string("O0001\nX1.\n%\n(END)\n"), std::string("(A)\n%\n(B)\n")}) {
     SCOPED_TRACE(text);
     expectSameForEveryChunk(text);
   }
@@ -143,6 +144,10 @@ TEST(LineChunks, TapeMarksDecideWhatIsTheProgram) {
     EXPECT_TRUE(f.programs[0].errors.empty()) << text;
     EXPECT_EQ(f.programs[0].blocks.size(), text[0] == 'O' ? 2u : 1u) << text;
   }
+  // A comment after the file's only '%' does not make it a leading one.
+  ParsedFile commented = parse("O0001\nX1.\nM30\n%\n(END)\n");
+  ASSERT_EQ(commented.programs.size(), 1u);
+  EXPECT_EQ(commented.programs[0].number, 1);
   // With a leading '%', what comes before it is leader, whatever follows.
   ParsedFile led = parse("LEADER X1.\n%\nO0002\nX1.\n");
   ASSERT_EQ(led.programs.size(), 1u);
@@ -163,12 +168,15 @@ TEST(LineChunks, TapeMarksDecideWhatIsTheProgram) {
   EXPECT_EQ(headerless.programs[0].number, -1);
   EXPECT_EQ(headerless.programs[0].blocks.size(), 2u);
   // No program text: one program whose only block is PS9008, at the '%' line or line 1.
-  for (const char* text : {"", "%\n", "\n\n%\n", "(ONLY A COMMENT)\n", "\xEF\xBB\xBF"}) {
+  const std::pair<const char*, uint32_t> none[] = {
+      {"", 1},     {"%\n", 1},      {"\n\n%\n", 3},         {"(ONLY A COMMENT)\n", 1},
+      {"\xEF\xBB\xBF", 1}, {"(A)\n%\n", 2}, {"(A)\n%\n(B)\n", 2}};
+  for (const auto& [text, line] : none) {
     ParsedFile f = parse(text);
     ASSERT_EQ(f.programs.size(), 1u) << text;
     ASSERT_EQ(f.programs[0].errors.size(), 1u) << text;
     EXPECT_EQ(f.programs[0].errors[0].code, "PS9008") << text;
-    EXPECT_EQ(f.programs[0].errors[0].loc.line, std::string(text) == "\n\n%\n" ? 3u : 1u) << text;
+    EXPECT_EQ(f.programs[0].errors[0].loc.line, line) << text;
   }
   // The byte-order mark is skipped: columns count from after it.
   ParsedFile bom = parse("\xEF\xBB\xBFO0001\nX1. Q\n");
@@ -216,5 +224,22 @@ TEST(LineChunks, LongProgramAtSeveralBufferSizes) {
     EXPECT_EQ(cut.fastLines, whole.fastLines);
     ASSERT_EQ(cut.programs.size(), 1u);
     expectSamePrograms(cut.programs[0], whole.programs[0], "long program");
+  }
+}
+
+// Random texts of tape marks, comments, headers, filler bytes and blocks: every piece size
+// compiles them as the whole text does (the tape state carries across pieces).
+TEST(LineChunks, RandomTapeTextsCompileAlikeInPieces) {
+  const char* const kParts[] = {"%",      "%\n",    "\n",      "(T)",   "(50%)", "O0001", "O0002",
+                                "X1.",    " ",      "\x1a",    "\r\n",  "#1=2",  "N5",    ";",
+                                "<SUB>",  "G01 Y2", "\xEF\xBB\xBF", "(",   ")",     "%O0003", "M30"};
+  std::mt19937 rng(2426);
+  for (int k = 0; k < 300; ++k) {
+    std::string text;
+    const int n = 1 + static_cast<int>(rng() % 14);
+    for (int p = 0; p < n; ++p) text += kParts[rng() % (sizeof kParts / sizeof kParts[0])];
+    SCOPED_TRACE(text);
+    expectSameForEveryChunk(text);
+    if (::testing::Test::HasFailure()) return;
   }
 }
