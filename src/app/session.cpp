@@ -37,6 +37,7 @@ static ParseOptions parseOptionsFor(const Setup& s) {
   ParseOptions o;
   o.maxLineLength = s.limits.maxLineLength;
   o.eightDigitO = s.programNumberDigits == 8;
+  o.hIsAxis = s.kind == MachineKind::Lathe && s.axes[5].present;
   return o;
 }
 

@@ -26,8 +26,14 @@ cornerw::Kind kindOf(int mode) {
 void Executor::cornerCheckBlock(const Words& w, int oneShot, bool crcMode) const {
   if (crcMode && w.hasCorner()) {
     // The control refuses ,C/,R in the block that starts or cancels compensation (in offset
-    // mode the chamfered path is compensated, see crcPush).
-    bool startup = modal_.g[7] != 400 && !(crc_ && crc_->active());
+    // mode the chamfered path is compensated, see crcPush). With a zero radius (a D offset of
+    // 0) the compensator never starts up: only the G41/G42 block itself is the start-up
+    // block, not every block after it.
+    bool commanded = false;
+    for (int k = 0; k < w.ng; ++k)
+      commanded |= w.g[static_cast<size_t>(k)] == 410 || w.g[static_cast<size_t>(k)] == 420;
+    bool startup =
+        modal_.g[7] != 400 && !(crc_ && crc_->active()) && (commanded || crcRadius() != 0);
     bool cancel = modal_.g[7] == 400;
     if (startup || cancel) {
       AlarmError e(AlarmId::ChamferInStartupCancel,

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "exec/executor.hpp"
+#include "lang/address_letters.hpp"
 
 namespace ncvm {
 namespace {
@@ -110,7 +111,8 @@ double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
     case Fn::Abs: return std::fabs(a);
     case Fn::Bin: return bcdToBinary(a);
     case Fn::Bcd: return binaryToBcd(a);
-    case Fn::Round: return std::round(a);  // halves away from zero
+    case Fn::Round:  // halves away from zero; in an NC address to its least increment
+      return roundPerUnit_ > 1 ? std::round(a * roundPerUnit_) / roundPerUnit_ : std::round(a);
     case Fn::Fix: return std::trunc(a);
     case Fn::Fup: return a >= 0 ? std::ceil(a) : std::floor(a);
     case Fn::Ln:
@@ -219,6 +221,22 @@ Value Executor::eval(int32_t expr) {
     }
   }
   return st[sp - 1];
+}
+
+Value Executor::evalAddress(int32_t expr, char letter) {
+  // ROUND in an address rounds to the address's least input increment (1.00333 -> 1.003 mm):
+  // incremental moves of rounded values then add up to what the axis really moved. A
+  // rotary axis counts degrees, whose increment does not follow G20/G21.
+  bool length = letters::isDimension(letter) || letter == 'c' || letter == 'r';
+  bool degrees = letter == 'A' || letter == 'B' || letter == 'C';
+  roundPerUnit_ = length ? static_cast<double>(incrementsPerUnit(
+                               setup_.increment, degrees ? InputUnit::Mm : modal_.unit))
+                         : 1.0;
+  struct Restore {
+    double& v;
+    ~Restore() { v = 1.0; }
+  } restore{roundPerUnit_};
+  return eval(expr);
 }
 
 bool Executor::evalCond(int32_t expr) { return eval(expr).asNumber() != 0.0; }

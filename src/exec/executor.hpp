@@ -226,6 +226,10 @@ class Executor {
 
   // eval.cpp
   Value eval(int32_t expr);
+  // An expression in the NC address `letter`: ROUND in it rounds to that address's least
+  // input increment instead of to a whole number.
+  Value evalAddress(int32_t expr, char letter);
+  double roundPerUnit_ = 1;  // ROUND's steps per unit: 1 in a macro statement
   bool evalCond(int32_t expr);
   double callFn(Fn fn, double a, double b, int32_t arg);
 

@@ -73,7 +73,7 @@ void Executor::gatherWords(const Block& b, Words& w) {
         break;
       }
       case WordKind::Expr: {
-        Value x = eval(wd.a);
+        Value x = evalAddress(wd.a, wd.letter);
         if (x.null) continue;
         v = x.v;
         point = true;

@@ -218,7 +218,7 @@ bool Executor::straightVariableWords(const Block& b, const Word* words, Straight
     double v = wd.value;
     bool point = (wd.flags & kHasPoint) != 0;
     if (wd.kind != WordKind::Literal) {
-      const Value x = wd.kind == WordKind::Expr ? eval(wd.a) : readVar(wd.a);
+      const Value x = wd.kind == WordKind::Expr ? evalAddress(wd.a, wd.letter) : readVar(wd.a);
       if (x.null) continue;  // a vacant variable drops the whole word
       v = wd.kind == WordKind::NegVar ? -x.v : x.v;
       point = true;

@@ -88,6 +88,14 @@ class Compiler {
   uint32_t file_;
   std::string_view stem_;
   ParseOptions opt_;
+  // The address rules of letters.hpp for this machine: these members hide the namespace
+  // functions in every check of the compiler (a lathe's H with a C axis is a dimension).
+  bool forbidsPoint(char letter) const {
+    return letters::forbidsPoint(letter) && !(opt_.hIsAxis && letter == 'H');
+  }
+  bool forbidsMinus(char letter) const {
+    return letters::forbidsMinus(letter) && !(opt_.hIsAxis && letter == 'H');
+  }
   size_t i_ = 0, end_ = 0, lineStart_ = 0;
   uint32_t line_ = 0;
 

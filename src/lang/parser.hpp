@@ -16,6 +16,9 @@ namespace ncvm {
 struct ParseOptions {
   uint32_t maxLineLength = 0;  // 0 = no limit; longer blocks become PS9004 Error blocks
   bool eightDigitO = false;    // O numbers up to 99999999 (0i-F/30i option)
+  // A lathe with a C axis: H is the incremental C address, a dimension that takes a decimal
+  // point and a sign (`G28 H0.0`, `H-5.`).
+  bool hIsAxis = false;
   // Plain lines through the one-pass fast path (fast_block.hpp). Tests turn it off to check
   // that both ways compile every line to the same Program.
   bool fastLines = true;
