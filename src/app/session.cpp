@@ -101,6 +101,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   std::optional<Alarm> late;
   if (!main_) throw std::runtime_error("no program to run");
   EventSink none;
+  for (const auto& [n, v] : setup_.initialVars)
+    if (n >= 200 && n <= 499 && !setup_.commonVars200)
+      throw SetupError(fmt::format("vars.#{}: #200-#499 need options.common_vars_200 = true", n),
+                       "vars");
   // The stock model listens beside the caller's sink; it is built first so a setup it
   // cannot simulate stops the job before anything runs. probe.use_stock simulates the
   // stock even without simulateStock (then nothing is written).
@@ -206,6 +210,13 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   nlohmann::json vars = nlohmann::json::object();
   for (const auto& [n, v] : exec.userVariables()) vars["#" + std::to_string(n)] = v;
   s["vars"] = vars;
+  // The interface signal outputs as the program left them (what the PMC last got).
+  nlohmann::json outputs = nlohmann::json::object();
+  for (int k = 0; k < 32; ++k)
+    if ((exec.signalOutputs(0) >> k) & 1u) outputs["#" + std::to_string(1100 + k)] = 1;
+  outputs["#1132"] = exec.signalOutputs(0);
+  outputs["#1133"] = exec.signalOutputs(1);
+  s["signals"] = outputs;
   s["work_offsets"] = workOffsetsJson(exec.memory(), setup_, true);
   s["tool_offsets"] = toolOffsetsJson(exec.memory(), setup_);
   // cycle_time is the modelled time ([timing] model = "dynamic") or length / feed.

@@ -87,6 +87,7 @@ enum class AlarmId : uint16_t {
   TraceLimit = 9006,
   ProgramFileChanged = 9007,
   SkipNotReceived = 9010,
+  SignalNotGiven = 9011,
 };
 
 struct AlarmInfo {
