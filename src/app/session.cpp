@@ -286,7 +286,9 @@ nlohmann::json Session::check() const {
       if (b.kind != BlockKind::Nc) continue;
       const Word* w = p->words.data() + b.firstWord;
       bool macroCall = false, latheCycle = false;
+      bool subCall = false;  // M98: its Q is a sequence number
       for (uint32_t k = 0; k < b.nWords; ++k) {
+        subCall |= w[k].letter == 'M' && w[k].kind == WordKind::Literal && w[k].value == 98;
         if (w[k].letter != 'G' || w[k].kind != WordKind::Literal) continue;
         // A G word far out of range (G314445000) is the run's alarm, not a cast to overflow here.
         if (!(w[k].value >= 0 && w[k].value < 1000)) continue;
@@ -309,6 +311,7 @@ nlohmann::json Session::check() const {
         seen |= bit;
         bool lengthAddress = std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
         if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P' || wd.letter == 'R')) lengthAddress = false;
+        if (subCall && wd.letter == 'Q') lengthAddress = false;
         if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) && wd.value != 0) {
           Alarm a{"W001",
                   fmt::format("{}{} has no decimal point: it means {} least increments ({} mm or {} in), not {}",
