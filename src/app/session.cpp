@@ -104,6 +104,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   std::optional<Alarm> late;
   if (!main_) throw std::runtime_error("no program to run");
   EventSink none;
+  for (const auto& [n, v] : setup_.initialVars)
+    if (n >= 200 && n <= 499 && !setup_.commonVars200)
+      throw SetupError(fmt::format("vars.#{}: #200-#499 need options.common_vars_200 = true", n),
+                       "vars");
   // The stock model listens beside the caller's sink; it is built first so a setup it
   // cannot simulate stops the job before anything runs. probe.use_stock simulates the
   // stock even without simulateStock (then nothing is written).
@@ -209,6 +213,13 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   nlohmann::json vars = nlohmann::json::object();
   for (const auto& [n, v] : exec.userVariables()) vars["#" + std::to_string(n)] = v;
   s["vars"] = vars;
+  // The interface signal outputs as the program left them (what the PMC last got).
+  nlohmann::json outputs = nlohmann::json::object();
+  for (int k = 0; k < 32; ++k)
+    if ((exec.signalOutputs(0) >> k) & 1u) outputs["#" + std::to_string(1100 + k)] = 1;
+  outputs["#1132"] = exec.signalOutputs(0);
+  outputs["#1133"] = exec.signalOutputs(1);
+  s["signals"] = outputs;
   s["work_offsets"] = workOffsetsJson(exec.memory(), setup_, true);
   s["tool_offsets"] = toolOffsetsJson(exec.memory(), setup_);
   // cycle_time is the modelled time ([timing] model = "dynamic") or length / feed.
@@ -293,7 +304,9 @@ nlohmann::json Session::check() const {
       if (b.kind != BlockKind::Nc) continue;
       const Word* w = p->words.data() + b.firstWord;
       bool macroCall = false, latheCycle = false;
+      bool subCall = false;  // M98: its Q is a sequence number
       for (uint32_t k = 0; k < b.nWords; ++k) {
+        subCall |= w[k].letter == 'M' && w[k].kind == WordKind::Literal && w[k].value == 98;
         if (w[k].letter != 'G' || w[k].kind != WordKind::Literal) continue;
         // A G word far out of range (G314445000) is the run's alarm, not a cast to overflow here.
         if (!(w[k].value >= 0 && w[k].value < 1000)) continue;
@@ -320,6 +333,7 @@ nlohmann::json Session::check() const {
         seen |= bit;
         bool lengthAddress = std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
         if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P' || wd.letter == 'R')) lengthAddress = false;
+        if (subCall && wd.letter == 'Q') lengthAddress = false;
         if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) && wd.value != 0) {
           // Divided, not multiplied, by the increments per unit: 3 / 10000 prints as 0.0003,
           // 3 * 0.0001 as 0.00030000000000000003 (fmt prints the shortest exact form).

@@ -136,6 +136,14 @@ struct SkipEvent {
   AxisArray mposition{};  // machine coordinates
 };
 
+// A write of an interface signal output (#1100-#1131 one bit, #1132/#1133 32 bits): what
+// the program sends the machine's PMC (a pallet changer, a bar feeder, a door).
+struct SignalEvent {
+  EventOrigin at;
+  int variable = 1100;
+  double value = 0;  // as stored: 0 or 1 for a bit, the 32-bit word for #1132/#1133
+};
+
 class EventSink {
  public:
   virtual ~EventSink() = default;
@@ -151,6 +159,7 @@ class EventSink {
   virtual void onSkip(const SkipEvent&) {}
   virtual void onComment(const CommentEvent&) {}
   virtual void onWorkOrigin(const WorkOriginEvent&) {}
+  virtual void onSignal(const SignalEvent&) {}
   // May this sink run on another thread than the control's (src/timing/timing_thread.hpp)?
   // Only when it touches nothing but its own state and what the events point to, and throws
   // only at a size limit it reports in byteHeadroom() (or on an I/O error).
@@ -176,6 +185,9 @@ class FanoutSink final : public EventSink {
   void onOffset(const OffsetEvent& e) override { for (auto* s : sinks_) s->onOffset(e); }
   void onSkip(const SkipEvent& e) override { for (auto* s : sinks_) s->onSkip(e); }
   void onComment(const CommentEvent& e) override { for (auto* s : sinks_) s->onComment(e); }
+  void onSignal(const SignalEvent& e) override {
+    for (auto* s : sinks_) s->onSignal(e);
+  }
   void onWorkOrigin(const WorkOriginEvent& e) override {
     for (auto* s : sinks_) s->onWorkOrigin(e);
   }

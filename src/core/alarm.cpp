@@ -132,6 +132,9 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::SkipNotReceived, "SKIP SIGNAL NOT RECEIVED",
        "ncvm: a G31 touched nothing while probe.miss_alarm is set (a real control ends the move "
        "normally; the option makes a missed probe visible)."},
+      {AlarmId::SignalNotGiven, "SIGNAL NOT IN SETUP",
+       "ncvm: the program read an interface signal input (#1000-#1032) that the setup's [signals] "
+       "does not give, while signals.missing = \"alarm\"."},
       {AlarmId::TraceLimit, "TRACE LIMIT REACHED", "ncvm: the trace grew past limits.max_trace_bytes."},
       {AlarmId::ProgramFileChanged, "PROGRAM FILE CHANGED",
        "ncvm: a streamed program's file was changed while it ran and ncvm had to read it again."},

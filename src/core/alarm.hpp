@@ -88,6 +88,7 @@ enum class AlarmId : uint16_t {
   ProgramFileChanged = 9007,
   NoProgramText = 9008,
   SkipNotReceived = 9010,
+  SignalNotGiven = 9011,
 };
 
 struct AlarmInfo {

@@ -51,6 +51,9 @@ void Executor::DeferSink::onOffset(const OffsetEvent& e) {
     s.onOffset(o);
   });
 }
+void Executor::DeferSink::onSignal(const SignalEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onSignal(e); });
+}
 void Executor::DeferSink::onSkip(const SkipEvent& e) { ex->deferEvent([e](EventSink& s) { s.onSkip(e); }); }
 void Executor::DeferSink::onWorkOrigin(const WorkOriginEvent& e) {
   ex->deferEvent([e](EventSink& s) { s.onWorkOrigin(e); });

@@ -65,8 +65,9 @@ Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
     machine_[static_cast<size_t>(k)] = lengthNm(a.initial, true, k) / (a.diameter ? 2 : 1);
   }
   initMemoryFromSetup();
+  // #200-#499 without their option are refused by the session before the run.
   for (const auto& [n, v] : setup.initialVars)
-    if (n < 500) writeVar(n, Value::num(v));
+    if (n < 500 && (n < 200 || setup.commonVars200)) writeVar(n, Value::num(v));
   restartFromMemory();
 }
 
@@ -463,6 +464,9 @@ std::vector<std::pair<int, double>> Executor::userVariables() const {
     if (!locals_[0][static_cast<size_t>(k)].null) out.emplace_back(k + 1, locals_[0][static_cast<size_t>(k)].v);
   for (int k = 0; k < 100; ++k)
     if (!common100_[static_cast<size_t>(k)].null) out.emplace_back(100 + k, common100_[static_cast<size_t>(k)].v);
+  for (int k = 0; k < 300; ++k)
+    if (!common200_[static_cast<size_t>(k)].null)
+      out.emplace_back(200 + k, common200_[static_cast<size_t>(k)].v);
   for (int k = 0; k < 500; ++k)
     if (!mem_.common500[static_cast<size_t>(k)].null) out.emplace_back(500 + k, mem_.common500[static_cast<size_t>(k)].v);
   return out;

@@ -86,6 +86,8 @@ class Executor {
   AxisArray machinePosition() const;  // program units
   // Non-vacant level-0 locals and common variables, for the state file.
   std::vector<std::pair<int, double>> userVariables() const;
+  // The interface signal outputs as the program left them: 0 = UO000-UO031, 1 = UO100-UO131.
+  uint32_t signalOutputs(int word) const { return signalOut_[static_cast<size_t>(word)]; }
   // The control's persistent memory (offsets, #500-#999, part counters). Replace it before
   // run() to start from a saved machine state; read it after run() to save one.
   MachineMemory& memory() { return mem_; }
@@ -150,7 +152,16 @@ class Executor {
   std::array<std::array<Value, 33>, kMaxLevels> callArgs_{};  // for L repeats
   std::array<std::array<double, 33>, kMaxLevels> callArgScale_{};
   std::array<Value, 100> common100_{};
+  std::array<Value, 300> common200_{};  // #200-#499, with options.common_vars_200
   double timerMsOffset_ = 0, timerHourOffset_ = 0;
+  // Interface signals (variables.cpp): reads so far of each input #1000-#1032 (its place in the
+  // setup's list), whether its missing-input warning was given, and the outputs UO000-UO031
+  // (#1100-#1131, #1132) and UO100-UO131 (#1133).
+  std::array<uint32_t, 33> signalReads_{};
+  std::array<bool, 33> signalWarned_{};
+  std::array<uint32_t, 2> signalOut_{};
+  double readSignalInput(int n);
+  void writeSignalOutput(int n, Value v);
   std::array<Value, 64> evalStack_{};
   double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0;
 
@@ -448,6 +459,7 @@ class Executor {
     void onSkip(const SkipEvent& e) override;
     void onComment(const CommentEvent& e) override;
     void onWorkOrigin(const WorkOriginEvent& e) override;
+    void onSignal(const SignalEvent& e) override;
   };
   struct Pending {
     int tag = -1;                   // >= 0: a compensated move waiting for its path

@@ -2,6 +2,7 @@
 // system variables of fanuc-reference B.8-B.10.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "exec/executor.hpp"
@@ -18,12 +19,53 @@ int Executor::axisByNumber(int n) const {
   return -1;
 }
 
+// #200-#499 exist only with the option that adds common variables.
+static void common200Option(const Setup& setup, int64_t n) {
+  if (!setup.commonVars200)
+    throw AlarmError(
+        AlarmId::VariableOutOfRange,
+        fmt::format("#{}: common variables #200-#499 are an option (options.common_vars_200 = true "
+                    "in the setup)",
+                    n));
+}
+
+// PS0115 for a number ncvm does not know: the Fanuc range it is in when there is one, so a
+// user knows whether to configure it or to ask for it.
+static AlarmError unknownVariable(int64_t n) {
+  struct Range {
+    int64_t from, to;
+    const char* name;
+  };
+  static const Range known[] = {
+      {1033, 1035, "interface signal inputs UI100-UI131, UI200-UI231, UI300-UI331 as words"},
+      {1134, 1135, "interface signal outputs UO200-UO231, UO300-UO331 as words"},
+      {1100, 1199, "interface signal outputs"},
+      {1000, 1099, "interface signal inputs"},
+      {2000, 2999, "tool offsets"},
+      {3100, 3199, "system constants"},
+      {3000, 3999, "alarm, clock, automatic operation control, part count"},
+      {4000, 4999, "modal information"},
+      {5000, 5999, "position information, work offsets"},
+      {7000, 7999, "additional work offsets G54.1 P1-P48 (mill)"},
+      {10000, 19999, "tool offsets, additional work offsets G54.1 P1-P300"},
+  };
+  for (const Range& r : known)
+    if (n >= r.from && n <= r.to)
+      return AlarmError(AlarmId::VariableOutOfRange,
+                        fmt::format("#{} ({}): not supported by ncvm", n, r.name));
+  return AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
 Value Executor::readVar(int64_t n) {
   if (n >= 1 && n <= 33) return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
   if (n >= 100 && n <= 199) return common100_[static_cast<size_t>(n - 100)];
   if (n >= 500 && n <= 999) return mem_.common500[static_cast<size_t>(n - 500)];
   if (n == 0) return Value::vacant();
   if (n >= 1000) return readSystem(n);
+  if (n >= 200 && n <= 499) {
+    common200Option(setup_, n);
+    return common200_[static_cast<size_t>(n - 200)];
+  }
   throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
 }
 
@@ -45,7 +87,69 @@ void Executor::writeVar(int64_t n, Value v) {
   }
   if (n == 0) throw AlarmError(AlarmId::WriteProtectedVariable, "#0");
   if (n >= 1000) return writeSystem(n, v);
+  if (n >= 200 && n <= 499) {
+    common200Option(setup_, n);
+    common200_[static_cast<size_t>(n - 200)] = v;
+    return;
+  }
   throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+}
+
+// An input as the setup gives it ([signals]): each read takes the next value of its list, the
+// last one repeating. A bit the setup does not give comes from #1032's word when that is
+// given; #1032 not given is made of the bits that are (the others 0).
+double Executor::readSignalInput(int n) {
+  const auto& inputs = setup_.signals.inputs;
+  auto next = [&](int v) {
+    const std::vector<double>& values = inputs.at(v);
+    uint32_t& k = signalReads_[static_cast<size_t>(v - 1000)];
+    double x = values[std::min<size_t>(k, values.size() - 1)];
+    if (k < values.size()) ++k;
+    return x;
+  };
+  if (inputs.count(n)) return next(n);
+  if (n < 1032) {
+    if (inputs.count(1032))
+      return static_cast<double>((static_cast<uint32_t>(next(1032)) >> (n - 1000)) & 1u);
+  } else {
+    bool any = false;
+    uint32_t word = 0;
+    for (int k = 0; k < 32; ++k)
+      if (inputs.count(1000 + k)) {
+        any = true;
+        if (next(1000 + k) != 0) word |= 1u << k;
+      }
+    if (any) return static_cast<double>(word);
+  }
+  const std::string what = n < 1032 ? fmt::format("#{} (input signal UI{:03d})", n, n - 1000)
+                                    : std::string("#1032 (input signals UI000-UI031)");
+  if (setup_.signals.missingAlarm) throw AlarmError(AlarmId::SignalNotGiven, what);
+  if (!signalWarned_[static_cast<size_t>(n - 1000)]) {
+    signalWarned_[static_cast<size_t>(n - 1000)] = true;
+    warn("W006", what + " is not in the setup's [signals]: it reads 0");
+  }
+  return 0;
+}
+
+// #1100-#1131 set one output (0 off, any other value on; vacant is 0); #1132 and #1133 set 32
+// at once (UO000-UO031, UO100-UO131; a negative value is its 32-bit two's complement).
+void Executor::writeSignalOutput(int n, Value v) {
+  const double x = v.null ? 0.0 : v.v;
+  double stored = 0;
+  if (n <= 1131) {
+    const uint32_t bit = 1u << (n - 1100);
+    const bool on = x != 0;
+    signalOut_[0] = on ? signalOut_[0] | bit : signalOut_[0] & ~bit;
+    stored = on ? 1 : 0;
+  } else {
+    const double r = std::nearbyint(x);
+    if (!(r >= -2147483648.0 && r <= 4294967295.0))
+      throw AlarmError(AlarmId::IntegerOverflow, fmt::format("#{} takes a 32-bit value", n));
+    const auto word = static_cast<uint32_t>(static_cast<int64_t>(r));
+    signalOut_[static_cast<size_t>(n - 1132)] = word;
+    stored = static_cast<double>(word);
+  }
+  sink().onSignal(SignalEvent{origin_, n, stored});
 }
 
 Value Executor::readSystem(int64_t n) {
@@ -65,6 +169,17 @@ Value Executor::readSystem(int64_t n) {
   if (n >= 5061 && n <= 5080) return posVar(5060, skip_, true);
   if (n >= 5081 && n <= 5100) return posVar(5080, toolShift_, false);
   if (n >= 5101 && n <= 5120) return Value::num(0.0);  // servo deviation: none in a simulation
+  // Manual handle interruption: no handle on a simulated machine.
+  if (n >= 5121 && n <= 5140) {
+    if (axisByNumber(static_cast<int>(n - 5120)) < 0)
+      throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
+    return Value::num(0.0);
+  }
+  if (n >= 1000 && n <= 1032) return Value::num(readSignalInput(static_cast<int>(n)));
+  if (n >= 1100 && n <= 1131)
+    return Value::num(static_cast<double>((signalOut_[0] >> (n - 1100)) & 1u));
+  if (n == 1132 || n == 1133)
+    return Value::num(static_cast<double>(signalOut_[static_cast<size_t>(n - 1132)]));
   if (n >= 4001 && n <= 4030) return Value::num(modal_.g[static_cast<size_t>(n - 4000)] / 10.0);
   if (n >= 4201 && n <= 4230) return Value::num(modal_.g[static_cast<size_t>(n - 4200)] / 10.0);
   if ((n >= 4102 && n <= 4130) || (n >= 4302 && n <= 4330)) {
@@ -102,6 +217,11 @@ Value Executor::readSystem(int64_t n) {
       secs %= 86400;
       return Value::num(static_cast<double>(secs / 3600 * 10000 + secs / 60 % 60 * 100 + secs % 60));
     }
+    // System constants (30i, 0i-F): pi and e.
+    case 3100:
+      return Value::num(3.14159265358979323846);
+    case 3101:
+      return Value::num(2.71828182845904523536);
     case 3901: return Value::num(mem_.parts3901);
     case 3902: return Value::num(mem_.parts3902);
     case 4000: {
@@ -112,7 +232,7 @@ Value Executor::readSystem(int64_t n) {
   }
   Value out;
   if (offsetVariable(n, &out, nullptr)) return out;
-  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  throw unknownVariable(n);
 }
 
 void Executor::writeSystem(int64_t n, Value v) {
@@ -139,11 +259,12 @@ void Executor::writeSystem(int64_t n, Value v) {
     case 3902: mem_.parts3902 = v.asNumber(); return;
     default: break;
   }
+  if (n >= 1100 && n <= 1133) return writeSignalOutput(static_cast<int>(n), v);
   if (n == 3007 || n == 3011 || n == 3012 || n == 4000 || (n >= 4001 && n <= 4330) ||
-      (n >= 5001 && n <= 5120))
+      (n >= 5001 && n <= 5140) || (n >= 1000 && n <= 1032) || n == 3100 || n == 3101)
     throw AlarmError(AlarmId::WriteProtectedVariable, fmt::format("#{}", n));
   if (offsetVariable(n, nullptr, &v)) return;
-  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  throw unknownVariable(n);
 }
 
 }  // namespace ncvm

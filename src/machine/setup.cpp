@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 #include <toml++/toml.h>
 #include <variant>
@@ -182,10 +183,44 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     std::string num = !rest.empty() && rest[0] == '#' ? rest.substr(1) : rest;
     int n = 0;
     auto r = std::from_chars(num.data(), num.data() + num.size(), n);
-    if (r.ec != std::errc() || r.ptr != num.data() + num.size() ||
-        !((n >= 100 && n <= 199) || (n >= 500 && n <= 999)))
-      bad(w, "vars take #100-#199 and #500-#999");
+    if (r.ec != std::errc() || r.ptr != num.data() + num.size() || !((n >= 100 && n <= 999)))
+      bad(w, "vars take #100-#199, #200-#499 (with options.common_vars_200 = true) and #500-#999");
     s.initialVars[n] = asNumber(v, w);
+    return;
+  }
+  if (head == "options") {
+    if (rest == "common_vars_200")
+      s.commonVars200 = asBool(v, w);
+    else
+      bad(w, "options keys: common_vars_200");
+    return;
+  }
+  if (head == "signals") {
+    if (rest == "missing") {
+      const auto& m = asString(v, w);
+      if (m != "warn" && m != "alarm") bad(w, "expected \"warn\" or \"alarm\"");
+      s.signals.missingAlarm = m == "alarm";
+      return;
+    }
+    std::string num = !rest.empty() && rest[0] == '#' ? rest.substr(1) : rest;
+    int n = 0;
+    auto r = std::from_chars(num.data(), num.data() + num.size(), n);
+    if (r.ec != std::errc() || r.ptr != num.data() + num.size() || !((n >= 1000 && n <= 1032)))
+      bad(w,
+          "signals take the inputs #1000-#1031 (one signal each) and #1032 (UI000-UI031 as one "
+          "word), and missing");
+    std::vector<double> values;
+    if (const auto* arr = std::get_if<std::vector<double>>(&v))
+      values = *arr;
+    else
+      values.push_back(asNumber(v, w));
+    if (values.empty()) bad(w, "expected a value or a non-empty list of values");
+    for (double x : values) {
+      if (n < 1032 && x != 0 && x != 1) bad(w, "an input signal is 0 or 1");
+      if (n == 1032 && !(x >= 0 && x <= 4294967295.0 && x == std::floor(x)))
+        bad(w, "#1032 is a whole number from 0 to 4294967295 (bit k = #[1000+k])");
+    }
+    s.signals.inputs[n] = std::move(values);
     return;
   }
   if (head == "axes") {

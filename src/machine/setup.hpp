@@ -112,6 +112,14 @@ struct Limits {
   int totalNesting = 15;      // both together
 };
 
+// The machine's interface signals as the macro reads them (#1000-#1031 one input each, #1032
+// the 32 inputs UI000-UI031 as one word): per variable, the values successive reads return
+// (the last one repeats).
+struct SignalSpec {
+  std::map<int, std::vector<double>> inputs;
+  bool missingAlarm = false;  // an input the setup does not give: alarm, not 0 and a warning
+};
+
 struct SetupError : std::runtime_error {
   SetupError(const std::string& what, std::string badKey = {}, int atLine = 0)
       : std::runtime_error(what), key(std::move(badKey)), line(atLine) {}
@@ -137,7 +145,11 @@ struct Setup {
   int64_t date = 20260101;  // #3011 YYYYMMDD
   int64_t time = 80000;     // #3012 HHMMSS
   std::string dprntPath;    // DPRNT/BPRNT output; empty = <state or program>.out beside it
-  std::map<int, double> initialVars;  // #100-#199, #500-#999 at cycle start
+  std::map<int, double> initialVars;  // #100-#199, (#200-#499), #500-#999 at cycle start
+  // The option that adds common variables #200-#499 (0i-F, 30i): off, those numbers alarm
+  // PS0115.
+  bool commonVars200 = false;
+  SignalSpec signals;
   // Work offsets by table index (machine/offsets.hpp); unset axes stay 0.
   std::map<int, std::array<double, kMaxAxes>> workOffsets;
   std::map<int, ToolOffsetSpec> toolOffsets;

@@ -492,6 +492,13 @@ void TraceWriter::onAux(const AuxEvent& e) {
   end();
 }
 
+void TraceWriter::onSignal(const SignalEvent& e) {
+  if (full_) return;  // past the limit: only the alarm line follows
+  begin("signal", e.at);
+  fmt::format_to(std::back_inserter(ev_), ",\"variable\":{},\"value\":{}", e.variable, e.value);
+  end();
+}
+
 void TraceWriter::onOffset(const OffsetEvent& e) {
   if (full_) return;  // past the limit: only the alarm line follows
   begin("offset", e.at);

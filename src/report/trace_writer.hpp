@@ -36,6 +36,7 @@ class TraceWriter final : public EventSink {
   void onSpindle(const SpindleEvent& e) override;
   void onCoolant(const CoolantEvent& e) override;
   void onAux(const AuxEvent& e) override;
+  void onSignal(const SignalEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
   // Formats into its own buffer and writes its own FILE: it may run on a worker thread.

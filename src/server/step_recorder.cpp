@@ -128,6 +128,9 @@ void StepRecorder::onCoolant(const CoolantEvent& e) {
 void StepRecorder::onAux(const AuxEvent& e) {
   record([&] { trace_.onAux(e); }, false);
 }
+void StepRecorder::onSignal(const SignalEvent& e) {
+  record([&] { trace_.onSignal(e); }, false);
+}
 void StepRecorder::onOffset(const OffsetEvent& e) {
   record([&] { trace_.onOffset(e); }, true);
 }

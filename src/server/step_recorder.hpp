@@ -39,6 +39,7 @@ class StepRecorder final : public EventSink {
   void onSpindle(const SpindleEvent& e) override;
   void onCoolant(const CoolantEvent& e) override;
   void onAux(const AuxEvent& e) override;
+  void onSignal(const SignalEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
 

@@ -559,6 +559,11 @@ void TimingStage::onOffset(const OffsetEvent& e) {
   if (next_) next_->onOffset(e);
 }
 
+void TimingStage::onSignal(const SignalEvent& e) {
+  stop();
+  if (next_) next_->onSignal(e);
+}
+
 void TimingStage::onComment(const CommentEvent& e) {
   if (!t_.operationComments) {
     if (next_) next_->onComment(e);

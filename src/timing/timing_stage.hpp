@@ -48,6 +48,7 @@ class TimingStage final : public EventSink {
   void onAux(const AuxEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
+  void onSignal(const SignalEvent& e) override;
   void onComment(const CommentEvent& e) override;
 
  private:

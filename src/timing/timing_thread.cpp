@@ -376,6 +376,10 @@ void TimingThread::onSkip(const SkipEvent& e) {
   queueWhole(e, Kind::Skip, &Record::skip, &TimingStage::onSkip);
 }
 
+void TimingThread::onSignal(const SignalEvent& e) {
+  queueWhole(e, Kind::Signal, &Record::signal, &TimingStage::onSignal);
+}
+
 void TimingThread::onComment(const CommentEvent& e) {
   if (!admit(e.at, e.text)) return stage_->onComment(e);
   Record& r = claim();
@@ -496,6 +500,9 @@ void TimingThread::deliver(Record& r) {
         break;
       case Kind::Comment:
         stage_->onComment(r.comment);
+        break;
+      case Kind::Signal:
+        stage_->onSignal(r.signal);
         break;
     }
   } catch (...) {

@@ -76,6 +76,7 @@ class TimingThread final : public EventSink {
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
   void onComment(const CommentEvent& e) override;
+  void onSignal(const SignalEvent& e) override;
 
   // Whether a run with these sinks after the stage may use the worker at all.
   static bool usable(const EventSink* downstream);
@@ -92,7 +93,8 @@ class TimingThread final : public EventSink {
     Aux,
     Offset,
     Skip,
-    Comment
+    Comment,
+    Signal
   };
   // One whole event in the side ring; the texts an event points to are copied into `text`
   // (their capacity is reused, so a full ring allocates nothing more).
@@ -110,6 +112,7 @@ class TimingThread final : public EventSink {
     OffsetEvent offset;
     SkipEvent skip;
     CommentEvent comment;
+    SignalEvent signal;
     std::string text[2];
   };
 
@@ -159,6 +162,7 @@ class TimingThread final : public EventSink {
     void onOffset(const OffsetEvent& e) override { ++count, next_->onOffset(e); }
     void onSkip(const SkipEvent& e) override { ++count, next_->onSkip(e); }
     void onComment(const CommentEvent& e) override { ++count, next_->onComment(e); }
+    void onSignal(const SignalEvent& e) override { ++count, next_->onSignal(e); }
 
    private:
     EventSink* next_;
