@@ -86,6 +86,12 @@ class Executor {
   AxisArray machinePosition() const;  // program units
   // Non-vacant level-0 locals and common variables, for the state file.
   std::vector<std::pair<int, double>> userVariables() const;
+  // #1-#33 of the current call level and #100-#199, as readVar gives them: the web viewer
+  // compares them after every event (src/server/state_diff.cpp), where 133 calls would cost.
+  const std::array<Value, 33>& currentLocals() const {
+    return locals_[static_cast<size_t>(frames_.empty() ? 0 : frames_.back().level)];
+  }
+  const std::array<Value, 100>& common100() const { return common100_; }
   // The control's persistent memory (offsets, #500-#999, part counters). Replace it before
   // run() to start from a saved machine state; read it after run() to save one.
   MachineMemory& memory() { return mem_; }
