@@ -84,10 +84,21 @@ nlohmann::json axesJson(const AxisArray& a, int n) {
 
 nlohmann::json modalJson(const ModalState& m, const Setup& setup) {
   nlohmann::json modal = nlohmann::json::object();
+  // The groups a series has, found once per series: the web viewer asks after every event
+  // that changes the modal state.
+  static const auto groupsOf = [] {
+    std::array<std::array<bool, kGroups>, 8> known{};
+    for (const auto& info : gcodeTable())
+      for (int s = 0; s < 8; ++s)
+        if ((info.seriesMask & (1u << s)) && info.group > 0 && info.group < kGroups)
+          known[static_cast<size_t>(s)][static_cast<size_t>(info.group)] = true;
+    return known;
+  }();
+  const unsigned bit = seriesBit(setup.series());
   for (int g = 1; g < kGroups; ++g) {
     bool known = false;
-    for (const auto& info : gcodeTable())
-      known |= (info.seriesMask & seriesBit(setup.series())) && info.group == g;
+    for (int s = 0; s < 8; ++s)
+      known |= (bit & (1u << s)) && groupsOf[static_cast<size_t>(s)][static_cast<size_t>(g)];
     if (known) modal[std::to_string(g)] = m.g[static_cast<size_t>(g)] / 10.0;
   }
   modal["F"] = m.feed;

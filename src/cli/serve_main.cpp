@@ -24,8 +24,8 @@ constexpr int kExitOk = 0;
 
 // A folder beside the executable (../share/ncvm/NAME when installed, ../NAME in a build
 // folder), else `fallback` (the source tree), else nothing; $ENV overrides.
-std::string folderBesideBinary(const char* env, const std::string& installed, const std::string& build,
-                               const std::string& fallback) {
+std::string folderBesideBinary(const char* env, const std::string& installed,
+                               const std::string& build, const std::string& fallback) {
   namespace fs = std::filesystem;
   if (const char* e = std::getenv(env); e && *e) return e;
   std::error_code ec;
@@ -55,9 +55,15 @@ int serveCommand(const ServeOptions& o) {
   c.port = o.port;
   c.threads = o.threads;
   c.caps.maxBlocks = o.maxBlocks;
+  c.caps.maxProgramBytes = o.maxProgramMb << 20;
+  c.maxUploadBytes = o.maxUploadMb << 20;
+  c.maxBodyBytes = 2 * c.maxUploadBytes + (1u << 20);  // JSON-escaped text and its setup
+  c.maxAnswerBytes = o.maxAnswerMb << 20;
+  c.worker.memoryBytes = o.maxMemoryMb << 20;
   c.worker.timeout = std::chrono::milliseconds(static_cast<int64_t>(o.timeoutSeconds * 1000));
   c.webDir = folderBesideBinary("NCVM_WEB", "../share/ncvm/web", "../web", "");
-  std::string examples = folderBesideBinary("NCVM_EXAMPLES", "../share/ncvm/examples", "", NCVM_SOURCE_EXAMPLES);
+  std::string examples =
+      folderBesideBinary("NCVM_EXAMPLES", "../share/ncvm/examples", "", NCVM_SOURCE_EXAMPLES);
   if (!examples.empty()) c.catalog.add("examples", examples);
   for (const auto& r : o.roots) {
     std::error_code ec;
@@ -69,7 +75,9 @@ int serveCommand(const ServeOptions& o) {
     fs::path p = fs::canonical(o.program);
     const server::Root* root = nullptr;
     for (const auto& r : c.catalog.roots())
-      if (server::resolveInside(r.path, fs::relative(p, fs::canonical(r.path)).generic_string()) == p) root = &r;
+      if (server::resolveInside(r.path, fs::relative(p, fs::canonical(r.path)).generic_string()) ==
+          p)
+        root = &r;
     if (!root) {
       c.catalog.add(p.parent_path().filename().string(), p.parent_path());
       root = &c.catalog.roots().back();
@@ -94,7 +102,9 @@ int serveCommand(const ServeOptions& o) {
   std::string host = o.bind.find(':') != std::string::npos ? "[" + o.bind + "]" : o.bind;
   fmt::print("ncvm serve: http://{}:{}/\n", host, port);
   if (web.config().webDir.empty())
-    fmt::print(stderr, "ncvm: warning: the front end was not built (web/README.md): only the API is served\n");
+    fmt::print(
+        stderr,
+        "ncvm: warning: the front end was not built (web/README.md): only the API is served\n");
   std::fflush(stdout);
   web.listen();
   return kExitOk;

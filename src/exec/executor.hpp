@@ -88,6 +88,12 @@ class Executor {
   std::vector<std::pair<int, double>> userVariables() const;
   // The interface signal outputs as the program left them: 0 = UO000-UO031, 1 = UO100-UO131.
   uint32_t signalOutputs(int word) const { return signalOut_[static_cast<size_t>(word)]; }
+  // #1-#33 of the current call level and #100-#199, as readVar gives them: the web viewer
+  // compares them after every event (src/server/state_diff.cpp), where 133 calls would cost.
+  const std::array<Value, 33>& currentLocals() const {
+    return locals_[static_cast<size_t>(frames_.empty() ? 0 : frames_.back().level)];
+  }
+  const std::array<Value, 100>& common100() const { return common100_; }
   // The control's persistent memory (offsets, #500-#999, part counters). Replace it before
   // run() to start from a saved machine state; read it after run() to save one.
   MachineMemory& memory() { return mem_; }

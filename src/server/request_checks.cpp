@@ -1,6 +1,9 @@
 #include "server/request_checks.hpp"
 
 #include <cctype>
+#include <filesystem>
+
+#include "server/safe_path.hpp"
 
 namespace ncvm::server {
 
@@ -68,22 +71,53 @@ std::string baseName(const std::string& s) {
   return b;
 }
 
+std::string tooLargeBody(uint64_t bytes, const ServerConfig& cf) {
+  auto mb = [](uint64_t b) { return std::to_string((b + (1u << 20) - 1) >> 20); };
+  return "request too large: " + std::to_string(bytes) + " bytes (" + mb(bytes) +
+         " MB), the server accepts requests of " + std::to_string(cf.maxBodyBytes) +
+         " bytes and a pasted or dropped program of " + mb(cf.maxUploadBytes) +
+         " MB at most (ncvm serve --max-upload-mb raises it; a program of the server's folders "
+         "runs by its path, up to --max-program-mb)";
+}
+
 RunRequest runRequestFromBody(const std::string& body, const ServerConfig& cf) {
-  if (body.size() > cf.maxBodyBytes) return refuse(413, "request too large");
+  if (body.size() > cf.maxBodyBytes) return refuse(413, tooLargeBody(body.size(), cf));
   nlohmann::json in = nlohmann::json::parse(body, nullptr, false);
   if (in.is_discarded() || !in.is_object()) return refuse(400, "the body must be a JSON object");
-  if (!in.contains("program") || !in["program"].is_string())
+  const bool byPath = !in.contains("program") && in.contains("root") && in["root"].is_string() &&
+                      in.contains("path") && in["path"].is_string();
+  if (!byPath && (!in.contains("program") || !in["program"].is_string()))
     return refuse(400, "\"program\" (the program text) is missing");
-  if (in["program"].get_ref<const std::string&>().size() > cf.caps.maxProgramBytes)
-    return refuse(413, "program too large");
-  // The worker gets only what the server vouches for: the text, a plain name, a setup
-  // text and library folders resolved inside the roots.
+  if (!byPath) {
+    const size_t size = in["program"].get_ref<const std::string&>().size();
+    if (size > cf.caps.maxProgramBytes) return refuse(413, tooLarge(size, cf.caps.maxProgramBytes));
+    if (size > cf.maxUploadBytes) return refuse(413, tooLargeBody(size, cf));
+  }
+  // The worker gets only what the server vouches for: the text (or a file inside the
+  // roots), a plain name, a setup text and library folders resolved inside the roots.
   RunRequest r;
   nlohmann::json& job = r.job;
-  job = {{"program", in["program"]},
-         {"name", baseName(field(in, "name", "program.nc"))},
+  job = {{"name", baseName(field(in, "name", "program.nc"))},
          {"caps", capsJson(cf.caps)},
          {"libs", nlohmann::json::array()}};
+  std::string dir = field(in, "dir", "");
+  if (byPath) {
+    const std::string path = in["path"].get<std::string>();
+    const Root* root = cf.catalog.find(in["root"].get<std::string>());
+    std::optional<std::filesystem::path> file;
+    std::error_code ec;
+    if (root && isPlainRelative(path)) file = resolveInside(root->path, path);
+    if (!file || !std::filesystem::is_regular_file(*file, ec))
+      return refuse(404, "no such program in the server's folders");
+    uint64_t size = std::filesystem::file_size(*file, ec);
+    if (ec) return refuse(404, "no such program in the server's folders");
+    if (size > cf.caps.maxProgramBytes) return refuse(413, tooLarge(size, cf.caps.maxProgramBytes));
+    job["program_path"] = file->string();
+    job["name"] = baseName(path);
+    dir = std::filesystem::path(path).parent_path().generic_string();
+  } else {
+    job["program"] = in["program"];
+  }
   if (in.contains("setup") && in["setup"].is_string()) {
     job["setup"] = in["setup"];
     job["setup_name"] = baseName(field(in, "setup_name", "setup.toml"));
@@ -93,7 +127,7 @@ RunRequest runRequestFromBody(const std::string& body, const ServerConfig& cf) {
     if (!cf.setupDir.empty()) job["setup_dir"] = cf.setupDir;
   }
   if (in.contains("root") && in["root"].is_string()) {
-    auto folder = cf.catalog.folder(in["root"].get<std::string>(), field(in, "dir", ""));
+    auto folder = cf.catalog.folder(in["root"].get<std::string>(), dir);
     if (!folder) return refuse(400, "bad folder: not inside the server's folders");
     job["libs"].push_back(folder->string());
   }

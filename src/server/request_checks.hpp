@@ -26,12 +26,16 @@ std::optional<std::string> foreignHostOrOrigin(const std::string& host, const st
 // alarms and the trace; it never opens a file).
 std::string baseName(const std::string& name);
 
+// "request too large: N bytes (..), the server accepts ... (--max-upload-mb ...)".
+std::string tooLargeBody(uint64_t bytes, const ServerConfig& config);
+
 // A /api/run body turned into the worker's request (run_job.hpp), or the HTTP status and
-// message it is refused with.
+// message it is refused with. The body names the program by its text ("program") or, without
+// one, by "root" and "path" (a file of the server's folders, at any size the caps allow).
 struct RunRequest {
   int status = 200;    // 200: `job` is ready for runWorker
   std::string error;   // otherwise: why
-  nlohmann::json job;  // program, name, caps, libs, setup, setup_name
+  nlohmann::json job;  // program or program_path, name, caps, libs, setup, setup_name
 };
 RunRequest runRequestFromBody(const std::string& body, const ServerConfig& config);
 

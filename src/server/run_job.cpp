@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -9,6 +11,7 @@
 #include "exec/executor.hpp"
 #include "server/safe_path.hpp"
 #include "server/step_recorder.hpp"
+#include "server/viewer_stream.hpp"
 
 namespace ncvm::server {
 
@@ -65,72 +68,165 @@ nlohmann::json failure(const std::string& message) {
   return {{"ok", false}, {"error", message}};
 }
 
+// A session ready to run the request's program, or a failure message.
+struct Prepared {
+  std::unique_ptr<Session> session;
+  std::string name;
+  std::string error;
+};
+
+// The program text: the request's "program", or the file "program_path" (a path the server
+// resolved inside its folders), read here so that a large file never passes through JSON.
+std::optional<std::string> programText(const nlohmann::json& request, const RunCaps& caps,
+                                       std::string& error) {
+  if (request.contains("program") && request["program"].is_string())
+    return request["program"].get<std::string>();
+  if (!request.contains("program_path") || !request["program_path"].is_string()) {
+    error = "the request needs \"program\": the program text";
+    return std::nullopt;
+  }
+  const std::string path = request["program_path"].get<std::string>();
+  std::error_code ec;
+  uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) {
+    error = "cannot read the program";
+    return std::nullopt;
+  }
+  if (size > caps.maxProgramBytes) {
+    error = tooLarge(size, caps.maxProgramBytes);
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::string text(size, '\0');
+  if (!in.read(text.data(), static_cast<std::streamsize>(size))) {
+    error = "cannot read the program";
+    return std::nullopt;
+  }
+  return text;
+}
+
+Prepared prepare(const nlohmann::json& request) {
+  Prepared p;
+  if (!request.is_object()) {
+    p.error = "the request needs \"program\": the program text";
+    return p;
+  }
+  RunCaps caps = capsFrom(request.value("caps", nlohmann::json()));
+  std::optional<std::string> text = programText(request, caps, p.error);
+  if (!text) return p;
+  if (text->size() > caps.maxProgramBytes) {
+    p.error = tooLarge(text->size(), caps.maxProgramBytes);
+    return p;
+  }
+  p.name = request.value("name", std::string("program.nc"));
+  if (p.name.empty() || p.name.size() > 255) p.name = "program.nc";
+
+  Setup setup = defaultSetup();
+  if (request.contains("setup") && request["setup"].is_string())
+    setup = parseSetup(request["setup"].get_ref<const std::string&>(),
+                       request.value("setup_name", "setup.toml"));
+  confineSetupFiles(setup, request);
+  // The server's caps bound whatever the setup asks for.
+  Limits& lim = setup.limits;
+  lim.maxBlocks = std::min(lim.maxBlocks, caps.maxBlocks);
+  lim.maxTimeSeconds = std::min(lim.maxTimeSeconds, caps.maxSimSeconds);
+  lim.maxTraceBytes = std::min(lim.maxTraceBytes, caps.maxTraceBytes);
+  lim.maxFileBytes = std::min(lim.maxFileBytes, caps.maxProgramBytes);
+
+  p.session = std::make_unique<Session>(setup);
+  Session& session = *p.session;
+  session.addProgramText(*text, p.name);
+  text.reset();
+  if (!session.main()) {
+    p.session.reset();
+    p.error = "no program in the text";
+    return p;
+  }
+  if (request.contains("libs") && request["libs"].is_array())
+    for (const auto& dir : request["libs"])
+      // The program's own file is in its folder: the text sent is that file (edited or
+      // not), not a second copy of its programs.
+      if (dir.is_string()) session.addLibrary(dir.get<std::string>(), p.name);
+  session.addBundledMacros();
+
+  // A setup with [stock] gets its stock simulated, as `ncvm run --stock-out` would, but
+  // no files are written: the final stock goes back in the answer.
+  if (session.setup().stock.present) {
+    session.simulateStock("");
+    session.keepViewerStock(kViewerGrid);
+  }
+  return p;
+}
+
+// What both answers carry besides the timeline.
+void finalParts(nlohmann::json& out, Session& session, Session::Result& r,
+                const std::string& name) {
+  out["ok"] = true;
+  out["name"] = name;
+  out["state"] = std::move(r.state);
+  out["check"] = session.check();
+  out["printed"] = r.printed;
+  out["load_warnings"] = session.store().warnings();
+  out["machine"] = {{"kind", session.setup().kind == MachineKind::Lathe ? "lathe" : "mill"},
+                    {"axes", session.setup().reportedAxes()}};
+  // The final stock (web/src/stock.js draws it); its analysis is state["stock"].
+  if (!r.viewerStock.is_null()) out["stock"] = std::move(r.viewerStock);
+}
+
 }  // namespace
 
+std::string tooLarge(uint64_t bytes, uint64_t limit) {
+  auto mb = [](uint64_t b) { return std::to_string((b + (1u << 20) - 1) >> 20); };
+  return "program too large: " + std::to_string(bytes) + " bytes (" + mb(bytes) +
+         " MB), the server accepts " + std::to_string(limit) + " bytes (" + mb(limit) +
+         " MB; ncvm serve --max-program-mb raises it)";
+}
+
 nlohmann::json runJob(const nlohmann::json& request) {
-  if (!request.is_object() || !request.contains("program") || !request["program"].is_string())
-    return failure("the request needs \"program\": the program text");
-  const std::string& text = request["program"].get_ref<const std::string&>();
-  RunCaps caps = capsFrom(request.value("caps", nlohmann::json()));
-  if (text.size() > caps.maxProgramBytes)
-    return failure("program too large: " + std::to_string(text.size()) +
-                   " bytes, the server accepts " + std::to_string(caps.maxProgramBytes));
-  std::string name = request.value("name", std::string("program.nc"));
-  if (name.empty() || name.size() > 255) name = "program.nc";
-
   try {
-    Setup setup = defaultSetup();
-    if (request.contains("setup") && request["setup"].is_string())
-      setup = parseSetup(request["setup"].get_ref<const std::string&>(),
-                         request.value("setup_name", "setup.toml"));
-    confineSetupFiles(setup, request);
-    // The server's caps bound whatever the setup asks for.
-    Limits& lim = setup.limits;
-    lim.maxBlocks = std::min(lim.maxBlocks, caps.maxBlocks);
-    lim.maxTimeSeconds = std::min(lim.maxTimeSeconds, caps.maxSimSeconds);
-    lim.maxTraceBytes = std::min(lim.maxTraceBytes, caps.maxTraceBytes);
-    lim.maxFileBytes = std::min(lim.maxFileBytes, caps.maxProgramBytes);
-
-    Session session(setup);
-    session.addProgramText(text, name);
-    if (!session.main()) return failure("no program in the text");
-    if (request.contains("libs") && request["libs"].is_array())
-      for (const auto& dir : request["libs"])
-        // The program's own file is in its folder: the text sent is that file (edited or
-        // not), not a second copy of its programs.
-        if (dir.is_string()) session.addLibrary(dir.get<std::string>(), name);
-    session.addBundledMacros();
-
-    // A setup with [stock] gets its stock simulated, as `ncvm run --stock-out` would, but
-    // no files are written: the final stock goes back in the answer.
-    if (session.setup().stock.present) {
-      session.simulateStock("");
-      session.keepViewerStock(kViewerGrid);
-    }
-
+    Prepared p = prepare(request);
+    if (!p.session) return failure(p.error);
+    Session& session = *p.session;
     StepRecorder recorder(session.files(), session.setup(), session.setup().limits.maxTraceBytes);
     session.setInspector([&](Executor& e) { recorder.attach(&e); });
     Session::Result r = session.run(&recorder);
     recorder.attach(nullptr);
 
     nlohmann::json out;
-    out["ok"] = true;
-    out["name"] = name;
-    out["state"] = std::move(r.state);
+    finalParts(out, session, r, p.name);
     out["trace"] = recorder.trace();
     out["steps"] = std::move(recorder.steps());
-    out["check"] = session.check();
-    out["printed"] = r.printed;
-    out["load_warnings"] = session.store().warnings();
-    out["machine"] = {{"kind", session.setup().kind == MachineKind::Lathe ? "lathe" : "mill"},
-                      {"axes", session.setup().reportedAxes()}};
-    // The final stock (web/src/stock.js draws it); its analysis is state["stock"].
-    if (!r.viewerStock.is_null()) out["stock"] = std::move(r.viewerStock);
     return out;
   } catch (const SetupError& e) {
     return failure(std::string("setup error: ") + e.what());
   } catch (const std::exception& e) {
     return failure(e.what());
+  }
+}
+
+void runViewerJob(const nlohmann::json& request, const std::function<void(std::string_view)>& out) {
+  std::unique_ptr<ViewerStream> stream;
+  auto fail = [&](const std::string& message) {
+    // Whatever was streamed stays valid: the end frame says why it stopped.
+    out(frame(FrameKind::End,
+              failure(message).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+  };
+  try {
+    Prepared p = prepare(request);
+    if (!p.session) return fail(p.error);
+    Session& session = *p.session;
+    stream = std::make_unique<ViewerStream>(session.files(), session.setup(),
+                                            session.setup().limits.maxTraceBytes, out);
+    session.setInspector([&](Executor& e) { stream->attach(&e); });
+    Session::Result r = session.run(stream.get());
+    stream->attach(nullptr);
+    nlohmann::json tail;
+    finalParts(tail, session, r, p.name);
+    stream->finish(std::move(tail));
+  } catch (const SetupError& e) {
+    fail(std::string("setup error: ") + e.what());
+  } catch (const std::exception& e) {
+    fail(e.what());
   }
 }
 

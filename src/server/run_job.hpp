@@ -4,13 +4,16 @@
 // and the check report. It runs inside a worker process (worker.hpp), so a request never
 // shares a control, variables or memory with another.
 #include <cstdint>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
 
 namespace ncvm::server {
 
 // The server's caps. A setup may ask for less, never for more.
 struct RunCaps {
-  uint64_t maxProgramBytes = 1u << 20;
+  uint64_t maxProgramBytes = 512ull << 20;  // as the command line (limits.max_file_bytes)
   uint64_t maxBlocks = 2'000'000;
   double maxSimSeconds = 360'000.0;  // simulated machine time
   uint64_t maxTraceBytes = 64u << 20;
@@ -25,7 +28,16 @@ struct RunCaps {
 // The answer: {"ok": true, "state", "trace" (JSON Lines text), "steps", "check", "printed",
 // "machine": {"kind", "axes"}, "stock" (with a [stock] in the setup: the final stock,
 // docs/web-viewer.md)} or {"ok": false, "error": MESSAGE} for a setup or load error.
+// Instead of "program", a request may name "program_path": a file the server resolved inside
+// its folders, read by the worker (a large program never passes through JSON).
 nlohmann::json runJob(const nlohmann::json& request);
+
+// The same run as the binary stream of viewer_stream.hpp, each frame to `out` as it is made;
+// a failure is an end frame {"ok": false, "error"}.
+void runViewerJob(const nlohmann::json& request, const std::function<void(std::string_view)>& out);
+
+// "program too large: N bytes (M MB), the server accepts L bytes (... --max-program-mb ...)".
+std::string tooLarge(uint64_t bytes, uint64_t limit);
 
 nlohmann::json capsJson(const RunCaps& caps);
 

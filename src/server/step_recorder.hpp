@@ -1,19 +1,15 @@
 #pragma once
-// The viewer's timeline: every event of a run as its trace line (docs/trace-format.md), and
-// beside each one what changed in the control since the previous event, so the browser can
-// rebuild the control's state at any step: macro variables (locals of the current level,
-// common, a set of system variables), modal state, offsets, block count and time.
-//
-// The state is read from the control when the event reaches the viewer. Under cutter
-// compensation a move leaves the control's look-ahead buffer after the blocks read ahead,
-// so its snapshot already holds what those blocks did (as on a real control's screen).
-#include <map>
+// The viewer's timeline as JSON (POST /api/run): every event of a run as its trace line
+// (docs/trace-format.md), and beside each one what changed in the control since the previous
+// event (state_diff.hpp), so a client can rebuild the control's state at any step. The page
+// itself reads the binary form (viewer_stream.hpp).
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "canon/events.hpp"
 #include "core/source.hpp"
 #include "report/trace_writer.hpp"
+#include "server/state_diff.hpp"
 
 namespace ncvm {
 class Executor;
@@ -47,16 +43,10 @@ class StepRecorder final : public EventSink {
   template <class Write>
   void record(Write write, bool offsetsChanged);
   void snapshot(bool offsetsChanged);
-  // Adds to `delta` the entries of `now` that differ from `before`, vacant ones as null.
-  static void diffInto(nlohmann::json& delta, const std::map<int, double>& before,
-                       const std::map<int, double>& now);
 
-  const Setup& setup_;
   TraceWriter trace_;
-  Executor* exec_ = nullptr;
+  StateDiff diff_;
   nlohmann::json steps_ = nlohmann::json::array();
-  std::map<int, double> locals_, common_, system_;
-  nlohmann::json modal_;
 };
 
 }  // namespace ncvm::server

@@ -2,12 +2,14 @@
 
 #include <httplib.h>
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
+#include "server/viewer_stream.hpp"
 
 namespace ncvm::server {
 
@@ -37,6 +39,29 @@ const char* contentType(const fs::path& p) {
   if (e == ".woff2") return "font/woff2";
   return "application/octet-stream";
 }
+
+// Cuts a byte stream into the frames of viewer_stream.hpp.
+class FrameSplitter {
+ public:
+  template <class OnFrame>
+  void feed(std::string_view bytes, OnFrame onFrame) {
+    pending_.append(bytes);
+    size_t at = 0;
+    while (pending_.size() - at >= 8) {
+      uint32_t kind = 0, length = 0;
+      std::memcpy(&kind, pending_.data() + at, 4);
+      std::memcpy(&length, pending_.data() + at + 4, 4);
+      size_t whole = 8 + length + (8 - length % 8) % 8;
+      if (pending_.size() - at < whole) break;
+      onFrame(std::string_view(pending_).substr(at, whole), kind);
+      at += whole;
+    }
+    pending_.erase(0, at);
+  }
+
+ private:
+  std::string pending_;
+};
 
 }  // namespace
 
@@ -68,9 +93,31 @@ WebServer::WebServer(ServerConfig config)
         sendError(res, 403, *refusal);
         return httplib::Server::HandlerResponse::Handled;
       }
+    // Compression: none on loopback, where it costs far more than it saves (brotli took 48-61
+    // s for an 18 MB answer); gzip at most elsewhere. cpp-httplib picks the encoding from the
+    // request's Accept-Encoding when it writes the answer, so that header is what is changed
+    // (the request object is the server's own, handed over as const).
+    auto& headers = const_cast<httplib::Request&>(req).headers;
+    auto accept = headers.find("Accept-Encoding");
+    if (accept != headers.end()) {
+      bool gzip = !loopbackOnly && accept->second.find("gzip") != std::string::npos;
+      headers.erase("Accept-Encoding");
+      if (gzip) headers.emplace("Accept-Encoding", "gzip");
+    }
     res.set_header("X-Content-Type-Options", "nosniff");
     res.set_header("Cache-Control", "no-store");
     return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  // cpp-httplib refuses a body over its payload limit before any handler: say which limit.
+  s.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
+    if (res.status != 413 || !res.body.empty()) return;
+    uint64_t length = 0;
+    try {
+      length = std::stoull(req.get_header_value("Content-Length"));
+    } catch (const std::exception&) {
+    }
+    sendError(res, 413, tooLargeBody(length, config_));
   });
 
   s.Get("/api/info", [this](const httplib::Request&, httplib::Response& res) {
@@ -85,6 +132,7 @@ WebServer::WebServer(ServerConfig config)
          {"caps", capsJson(cf.caps)},
          {"timeout_ms", cf.worker.timeout.count()},
          {"max_body_bytes", cf.maxBodyBytes},
+         {"max_upload_bytes", cf.maxUploadBytes},
          {"setup", cf.setupText.empty() ? nlohmann::json(nullptr) : nlohmann::json(cf.setupText)},
          {"setup_name", cf.setupName},
          {"start", cf.startPath.empty()
@@ -128,6 +176,46 @@ WebServer::WebServer(ServerConfig config)
     bool ok = w.output.find("\"ok\":true") != std::string::npos;
     res.status = ok ? 200 : 400;
     res.set_content(std::move(w.output), "application/json");
+  });
+
+  // The page's run: the binary frames of viewer_stream.hpp, passed on as the worker makes
+  // them. Only whole frames are passed on, so that when the worker stops short (timeout,
+  // crash, the answer cap) the server's own end frame says why.
+  s.Post("/api/run.bin", [this](const httplib::Request& req, httplib::Response& res) {
+    RunRequest run = runRequestFromBody(req.body, config_);
+    if (run.status != 200) return sendError(res, run.status, run.error);
+    run.job["format"] = "binary";
+    auto job = std::make_shared<std::string>(
+        run.job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+    res.status = 200;
+    res.set_chunked_content_provider(
+        "application/octet-stream", [this, job](size_t, httplib::DataSink& sink) {
+          FrameSplitter frames;
+          bool ended = false, open = true;
+          WorkerLimits limits = config_.worker;
+          limits.maxOutputBytes = config_.maxAnswerBytes;
+          WorkerResult w = runWorker(config_.workerExe, *job, limits, [&](std::string_view bytes) {
+            frames.feed(bytes, [&](std::string_view f, uint32_t kind) {
+              if (kind == static_cast<uint32_t>(FrameKind::End)) ended = true;
+              open = open && sink.write(f.data(), f.size());
+            });
+            return open;
+          });
+          if (!ended && open) {
+            std::string why = w.status == WorkerResult::Status::Timeout
+                                  ? "timeout: " + w.detail + " (ncvm serve --timeout)"
+                              : w.status == WorkerResult::Status::TooLarge
+                                  ? w.detail + " (ncvm serve --max-answer-mb)"
+                              : w.detail.empty() ? "the worker ended without an answer"
+                                                 : w.detail;
+            std::string f = frame(FrameKind::End,
+                                  nlohmann::json{{"ok", false}, {"error", why}}.dump(
+                                      -1, ' ', false, nlohmann::json::error_handler_t::replace));
+            sink.write(f.data(), f.size());
+          }
+          sink.done();
+          return true;
+        });
   });
 
   s.Get("/api/.*", [](const httplib::Request&, httplib::Response& res) {

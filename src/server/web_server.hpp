@@ -26,8 +26,10 @@ struct ServerConfig {
   std::string workerExe;             // the ncvm binary (for `ncvm serve-worker`)
   RunCaps caps;
   WorkerLimits worker;
-  uint64_t maxBodyBytes = 2u << 20;  // a request
-  int threads = 8;                   // concurrent requests (and so concurrent runs)
+  uint64_t maxUploadBytes = 64u << 20;   // a program's text in a request (pasted, dropped)
+  uint64_t maxBodyBytes = 129u << 20;    // a request: the text JSON-escaped, and its setup
+  uint64_t maxAnswerBytes = 2ull << 30;  // the binary run answer (/api/run.bin)
+  int threads = 8;                       // concurrent requests (and so concurrent runs)
 };
 
 class WebServer {

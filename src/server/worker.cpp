@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "server/run_job.hpp"
+#include "server/viewer_stream.hpp"
 
 extern char** environ;
 
@@ -56,8 +57,8 @@ struct Child {
 
 }  // namespace
 
-WorkerResult runWorker(const std::string& exe, const std::string& input,
-                       const WorkerLimits& limits) {
+WorkerResult runWorker(const std::string& exe, const std::string& input, const WorkerLimits& limits,
+                       const std::function<bool(std::string_view)>& onOutput) {
   // A worker that dies before reading its request must give EPIPE here, not kill the server.
   static std::once_flag ignorePipe;
   std::call_once(ignorePipe, [] { std::signal(SIGPIPE, SIG_IGN); });
@@ -91,7 +92,9 @@ WorkerResult runWorker(const std::string& exe, const std::string& input,
 
   auto deadline = std::chrono::steady_clock::now() + limits.timeout;
   size_t sent = 0;
-  char buf[65536];
+  uint64_t received = 0;
+  std::vector<char> buffer(1u << 20);
+  char* buf = buffer.data();
   if (input.empty()) inWrite.reset();
   while (outRead.fd >= 0) {
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
@@ -112,10 +115,18 @@ WorkerResult runWorker(const std::string& exe, const std::string& input,
       if (sent == input.size()) inWrite.reset();  // EOF: the request is complete
     }
     if (fds[0].revents & (POLLIN | POLLERR | POLLHUP)) {
-      ssize_t r = ::read(outRead.fd, buf, sizeof buf);
+      ssize_t r = ::read(outRead.fd, buf, buffer.size());
       if (r > 0) {
-        res.output.append(buf, static_cast<size_t>(r));
-        if (res.output.size() > limits.maxOutputBytes) {
+        received += static_cast<uint64_t>(r);
+        if (onOutput) {
+          if (!onOutput(std::string_view(buf, static_cast<size_t>(r)))) {
+            res.detail = "the client went away";
+            return res;  // ~Child kills it
+          }
+        } else {
+          res.output.append(buf, static_cast<size_t>(r));
+        }
+        if (received > limits.maxOutputBytes) {
           res.status = WorkerResult::Status::TooLarge;
           res.detail =
               "the answer is larger than " + std::to_string(limits.maxOutputBytes) + " bytes";
@@ -167,6 +178,24 @@ int workerMain(uint64_t memoryBytes) {
   (void)memoryBytes;
 #endif
   std::string input((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
+  nlohmann::json request = nlohmann::json::parse(input, nullptr, false);
+  if (request.is_object() && request.value("format", "") == "binary") {
+    input.clear();
+    input.shrink_to_fit();
+    bool written = true;
+    try {
+      runViewerJob(request, [&](std::string_view frame) {
+        written = written && std::fwrite(frame.data(), 1, frame.size(), stdout) == frame.size() &&
+                  std::fflush(stdout) == 0;
+      });
+    } catch (const std::bad_alloc&) {
+      std::string f = frame(
+          FrameKind::End,
+          R"j({"ok":false,"error":"the run needed more memory than the server allows (ncvm serve --max-memory-mb)"})j");
+      std::fwrite(f.data(), 1, f.size(), stdout);
+    }
+    return written && std::fflush(stdout) == 0 ? 0 : 1;
+  }
   std::string text = workerAnswer(input);
   std::fwrite(text.data(), 1, text.size(), stdout);
   return std::fflush(stdout) == 0 ? 0 : 1;

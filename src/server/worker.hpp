@@ -4,7 +4,9 @@
 // request, and concurrent tabs never share a control.
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 
 namespace ncvm::server {
 
@@ -20,15 +22,19 @@ struct WorkerResult {
   std::string detail;  // why, otherwise
 };
 
-// Runs `exe serve-worker` with `input` on its stdin; returns what it wrote on stdout.
-WorkerResult runWorker(const std::string& exe, const std::string& input,
-                       const WorkerLimits& limits);
+// Runs `exe serve-worker` with `input` on its stdin; returns what it wrote on stdout. With
+// `onOutput`, the output goes there as it arrives instead (WorkerResult::output stays empty);
+// onOutput returning false (the client went away) kills the worker.
+WorkerResult runWorker(const std::string& exe, const std::string& input, const WorkerLimits& limits,
+                       const std::function<bool(std::string_view)>& onOutput = {});
 
 // The child's answer (JSON text) to one request (JSON text): runJob, with a malformed request
 // or an exhausted memory cap answered as {"ok": false, "error"}.
 std::string workerAnswer(const std::string& request);
 
-// The child's side: reads the request from stdin, runs it (run_job.hpp), writes the answer.
+// The child's side: reads the request from stdin, runs it (run_job.hpp), writes the answer:
+// JSON, or with "format": "binary" in the request the frames of viewer_stream.hpp, each as
+// soon as it is made.
 // `memoryBytes` caps its own address space first (0: no cap).
 int workerMain(uint64_t memoryBytes);
 

@@ -1,4 +1,7 @@
-// The server's JSON API (src/server/web_server.cpp).
+// The server's API (src/server/web_server.cpp): JSON for the lists and files, and the run as
+// a binary stream read and turned into a timeline by a Web Worker (run.worker.js).
+import { withViews } from './model.js';
+
 async function call(url, options) {
   const res = await fetch(url, options);
   let body;
@@ -14,5 +17,29 @@ async function call(url, options) {
 export const info = () => call('api/info');
 export const files = () => call('api/files');
 export const file = (root, path) => call(`api/file?root=${encodeURIComponent(root)}&path=${encodeURIComponent(path)}`);
-export const run = (req) =>
-  call('api/run', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(req) });
+
+// Runs `req` ({program, name, setup, root, dir} or, for a file of the server's folders
+// unchanged, {root, path, setup}); onProgress({events, bytes, line}) while it streams.
+// Resolves to {ok: true, model} or {ok: false, error}. One worker per run: a new run
+// cancels the last one.
+let current = null;
+export function run(req, onProgress = () => {}) {
+  current?.terminate();
+  const worker = new Worker(new URL('./run.worker.js', import.meta.url), { type: 'module' });
+  current = worker;
+  return new Promise((resolve) => {
+    const end = (v) => {
+      worker.terminate();
+      if (current === worker) current = null;
+      resolve(v);
+    };
+    worker.onmessage = (e) => {
+      const d = e.data;
+      if (d.type === 'progress') onProgress(d);
+      else if (d.type === 'error') end({ ok: false, error: d.error, status: d.status });
+      else if (d.type === 'done') end(d.model.answer.ok ? { ok: true, model: withViews(d.model) } : { ok: false, error: d.model.answer.error });
+    };
+    worker.onerror = (e) => end({ ok: false, error: `the run worker failed: ${e.message}` });
+    worker.postMessage({ url: new URL('api/run.bin', location.href).href, request: req });
+  });
+}

@@ -3,22 +3,23 @@
 // colour. The link knows the model only through moveLine() and movePoints() below, so that a
 // change of how moves are stored touches these two functions only.
 import * as THREE from 'three';
+import { movePointsAt } from './model.js';
 
 // The program line of move i when it is in `file` (the editor's program), else 0.
 export function moveLine(model, i, file) {
-  const e = model.moves[i].event;
-  return !file || e.file === file ? e.line : 0;
+  const e = model.mEvent[i];
+  return !file || model.answer.files?.[model.file[e]] === file ? model.line[e] : 0;
 }
 
 // The points of move i (work coordinates, a polyline).
 export function movePoints(model, i) {
-  return model.moves[i].pts;
+  return movePointsAt(model, i);
 }
 
 // line -> moves: the moves of each line of `file`, as index ranges into one Int32Array
 // (a line in a loop has many moves; a line of a subprogram in another file has none).
 export function lineIndex(model, file) {
-  const n = model.moves.length;
+  const n = model.moves;
   const lineOf = new Int32Array(n);
   let maxLine = 0;
   for (let i = 0; i < n; i++) maxLine = Math.max(maxLine, (lineOf[i] = moveLine(model, i, file)));
@@ -67,7 +68,7 @@ export class PathLink {
   }
 
   get moveCount() {
-    return this.model ? this.model.moves.length : 0;
+    return this.model ? this.model.moves : 0;
   }
 
   points(i) {
@@ -92,27 +93,45 @@ export class PathLink {
     };
   }
 
-  // The move nearest to a client point, within PICK_RADIUS_PX, or -1.
+  // The move nearest to a client point, within PICK_RADIUS_PX, or -1: the segments of the
+  // path's vertex buffer (scene coordinates), each pair one segment of one move.
   moveAt(cx, cy) {
     const model = this.model;
     if (!model) return -1;
-    const proj = this.project();
+    const cam = this.view.camera;
+    cam.updateMatrixWorld();
+    const m = new THREE.Matrix4().multiplyMatrices(cam.projectionMatrix, cam.matrixWorldInverse).elements;
+    const rect = this.view.renderer.domElement.getBoundingClientRect();
+    const v = model.vertices;
+    const px = new Float64Array(2);
+    const proj = (k) => {
+      const x = v[k * 3], y = v[k * 3 + 1], z = v[k * 3 + 2];
+      const w = m[3] * x + m[7] * y + m[11] * z + m[15];
+      if (w <= 0) return false;
+      px[0] = rect.left + ((m[0] * x + m[4] * y + m[8] * z + m[12]) / w + 1) * 0.5 * rect.width;
+      px[1] = rect.top + (1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / w) * 0.5 * rect.height;
+      return true;
+    };
     let best = -1, bestD = PICK_RADIUS_PX * PICK_RADIUS_PX;
-    for (let i = 0; i < model.moves.length; i++) {
-      const pts = movePoints(model, i);
-      let a = proj(pts[0]);
-      for (let j = 1; j < pts.length; j++) {
-        const b = proj(pts[j]);
-        if (a && b) {
-          const dx = b[0] - a[0], dy = b[1] - a[1], len = dx * dx + dy * dy;
-          const t = len > 0 ? Math.max(0, Math.min(1, ((cx - a[0]) * dx + (cy - a[1]) * dy) / len)) : 0;
-          const ex = a[0] + t * dx - cx, ey = a[1] + t * dy - cy, d = ex * ex + ey * ey;
-          if (d < bestD) (bestD = d), (best = i);
-        }
-        a = b;
-      }
+    for (let k = 0; k + 1 < v.length / 3; k += 2) {
+      if (!proj(k)) continue;
+      const ax = px[0], ay = px[1];
+      if (!proj(k + 1)) continue;
+      const dx = px[0] - ax, dy = px[1] - ay, len = dx * dx + dy * dy;
+      const t = len > 0 ? Math.max(0, Math.min(1, ((cx - ax) * dx + (cy - ay) * dy) / len)) : 0;
+      const ex = ax + t * dx - cx, ey = ay + t * dy - cy, d = ex * ex + ey * ey;
+      if (d < bestD) (bestD = d), (best = k);
     }
-    return best;
+    if (best < 0) return -1;
+    // The move whose vertices hold segment `best`: the last with vFirst <= best.
+    const f = model.vFirst;
+    let lo = 0, hi = f.length - 1;
+    while (lo < hi) {
+      const mid = (lo + hi + 1) >> 1;
+      if (f[mid] <= best) lo = mid;
+      else hi = mid - 1;
+    }
+    return lo;
   }
 
   pickAt(cx, cy) {

@@ -3,7 +3,8 @@ import './style.css';
 import * as api from './api.js';
 import { Editor } from './editor.js';
 import { View3D } from './view3d.js';
-import { buildModel, toolAt } from './model.js';
+import { toolAt, stateAt, eventAt, notesOf, verticesDone, nextBlockEnd, prevBlockEnd } from './model.js';
+import { RunProgress } from './progress.js';
 import { Workspace } from './workspace.js';
 import { PathLink } from './link.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
@@ -13,6 +14,7 @@ const SUB = 10; // slider positions per event: scrubbing shows a move part-way
 
 const editor = new Editor($('editor'));
 const view = new View3D($('view'));
+const progress = new RunProgress($('view'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
 const ui = { model: null, p: 0, source: { kind: 'new', root: null, dir: '', name: 'program.nc' }, stale: false };
@@ -53,11 +55,13 @@ async function loadFiles() {
 }
 
 async function openFile(root, path) {
+  progress.set('loading');
   const f = await api.file(root, path);
+  progress.set('ready', 0);
   if (!f.ok) return setStatus(f.error, 'bad');
   editor.text = f.text;
   $('setup-text').value = f.setup || '';
-  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop() };
+  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text };
   $('files').value = `${root}|${path}`;
   workspace.opened(sourceKey());
   setStatus(`${path}${f.setup_path ? ` (setup ${f.setup_path})` : ''}`);
@@ -115,17 +119,26 @@ editor.onChange = () => {
 async function run() {
   setStatus('running...', 'busy');
   $('run').disabled = true;
-  const req = { program: editor.text, name: ui.source.name };
+  const text = editor.text;
+  const req = { name: ui.source.name };
+  // A file of the server's folders, unchanged, runs by its path: its text is not sent back.
+  const unchanged = ui.source.kind === 'server' && ui.source.text === text;
+  if (unchanged) Object.assign(req, { root: ui.source.root, path: ui.source.path });
+  else req.program = text;
   if ($('setup-text').value.trim()) req.setup = $('setup-text').value;
-  if (ui.source.root) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
-  const answer = await api.run(req).catch((e) => ({ ok: false, error: String(e) }));
+  if (ui.source.root && !unchanged) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
+  progress.set('running');
+  const lines = editor.lineCount || 0;
+  const result = await api.run(req, (p) => progress.update(p, lines));
   $('run').disabled = false;
-  if (!answer.ok) {
-    setStatus(answer.error || 'the run failed', 'bad');
+  if (!result.ok) {
+    progress.set('alarm');
+    setStatus(result.error || 'the run failed', 'bad');
     return;
   }
   ui.stale = false;
-  const model = buildModel(answer);
+  const model = result.model;
+  const answer = model.answer;
   ui.model = model;
   ui.shown = null;
   const s = answer.state;
@@ -138,14 +151,15 @@ async function run() {
   view.setModel(model);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
-  $('scrub').max = model.events.length * SUB;
+  $('scrub').max = model.n * SUB;
   renderMessages($('p-messages'), model, pick);
   renderTime($('p-time'), model);
   setStatus(
     s.alarm ? `${s.end}: ${s.alarm.code} ${s.alarm.text} (${s.alarm.file}:${s.alarm.line})` : `ended ${s.end}: ${s.blocks} blocks, ${s.moves} moves, cycle time ${s.cycle_time.toFixed(2)} s`,
     s.alarm ? 'bad' : 'good',
   );
-  goTo(model.events.length * SUB);
+  goTo(model.n * SUB);
+  progress.set(s.alarm ? 'alarm' : 'ready', model.moves);
 }
 
 // Jump to a message: to its event when it has one, else just to its line.
@@ -157,27 +171,27 @@ function pick(item) {
 function goTo(pos) {
   const m = ui.model;
   if (!m) return;
-  ui.p = Math.max(0, Math.min(pos, m.events.length * SUB));
+  ui.p = Math.max(0, Math.min(pos, m.n * SUB));
   $('scrub').value = ui.p;
   const p = ui.p / SUB;
   const tool = toolAt(m, p);
   const done = Math.floor(p);
-  view.setProgress(done, tool.work);
+  view.setProgress(verticesDone(m, done), tool.work);
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
-  const ev = m.events[idx];
-  const state = idx >= 0 ? m.states[idx] : null;
+  const ev = eventAt(m, idx);
+  const state = stateAt(m, idx);
   renderPosition($('p-position'), m, tool);
   renderVariables($('p-vars'), state, ui.shown);
   ui.shown = state;
-  renderOffsets($('p-offsets'), state || m.states[0]);
+  renderOffsets($('p-offsets'), state || stateAt(m, 0));
   renderModal($('p-modal'), state);
   if (ev) {
     const here = ev.file === ui.source.name;
     editor.setCurrent(here ? ev.line : 0);
-    $('stepinfo').textContent = `event ${idx + 1}/${m.events.length} · block ${state.block} · ${ev.file}:${ev.line}${ev.n !== null ? ` N${ev.n}` : ''} · ${ev.type}${ev.mode ? ' ' + ev.mode : ''} · t ${state.time.toFixed(2)} s`;
+    $('stepinfo').textContent = `event ${idx + 1}/${m.n} · block ${state.block} · ${ev.file}:${ev.line}${ev.n !== null ? ` N${ev.n}` : ''} · ${ev.type}${ev.mode ? ' ' + ev.mode : ''} · t ${state.time.toFixed(2)} s`;
   } else {
     editor.setCurrent(0);
-    $('stepinfo').textContent = `start · ${m.events.length} events`;
+    $('stepinfo').textContent = `start · ${m.n} events`;
   }
 }
 
@@ -187,12 +201,9 @@ function step(dir) {
   if (!m) return;
   const done = Math.floor(ui.p / SUB);
   if (dir > 0) {
-    const b = m.blocks.find((x) => x.last + 1 > done);
-    if (b) goTo((b.last + 1) * SUB);
-  } else {
-    const prev = [...m.blocks].reverse().find((x) => x.last + 1 < done || (x.last + 1 === done && ui.p % SUB !== 0));
-    goTo(prev ? (prev.last + 1) * SUB : 0);
-  }
+    const end = nextBlockEnd(m, done);
+    if (end !== null) goTo(end * SUB);
+  } else goTo(prevBlockEnd(m, done, ui.p % SUB !== 0) * SUB);
 }
 
 $('scrub').addEventListener('input', (e) => goTo(Number(e.target.value)));
@@ -220,6 +231,7 @@ document.addEventListener('keydown', (e) => {
     setStatus('pick an example or write a program, then Run');
   }
   document.body.dataset.ready = 'true';
+  if (document.body.dataset.run === 'loading') progress.set('ready', 0);
 })();
 
 // The last visit's program: its edited text when it was edited, else the file again.

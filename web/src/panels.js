@@ -1,7 +1,7 @@
 // The side panels: position page, macro variables, offsets, modal state, messages and
 // alarms, cycle time. Each render function fills one element from the model and the step.
 import { escapeHtml } from './highlight.js';
-import { timeBreakdown, timeByTool } from './model.js';
+import { timeBreakdown, timeByTool, notesOf } from './model.js';
 
 const fmt = (v, d = 3) => (typeof v === 'number' ? v.toFixed(d) : v ?? '');
 
@@ -84,9 +84,8 @@ export function renderMessages(el, model, onPick) {
   if (alarm) items.push({ kind: 'alarm', line: alarm.line, file: alarm.file, text: `${alarm.code} ${alarm.text}`, col: alarm.col });
   for (const c of a.check?.alarms || []) if (!alarm || c.line !== alarm.line || c.code !== alarm.code) items.push({ kind: 'alarm', ...c, text: `${c.code} ${c.text}` });
   for (const w of [...(a.check?.warnings || []), ...(a.state?.warnings || [])]) items.push({ kind: 'warning', ...w, text: `${w.code} ${w.text}` });
-  model.events.forEach((e, i) => {
-    if (e.type === 'message') items.push({ kind: 'message', line: e.line, file: e.file, text: `${e.source}: ${e.text}`, event: i });
-  });
+  for (const e of notesOf(model))
+    if (e.type === 'message') items.push({ kind: 'message', line: e.line, file: e.file, text: `${e.source}: ${e.text}`, event: e.index });
   for (const w of a.load_warnings || []) items.push({ kind: 'warning', text: w });
   const stock = a.state?.stock;
   for (const c of stock?.collisions || [])

@@ -6,7 +6,6 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { drawStock } from './stock.js';
 
-const COLORS = { rapid: 0xff5533, feed: 0x33ccff, comp: 0xdd55ff, thread: 0xffdd33 };
 const BG = 0x15181d;
 
 export class View3D {
@@ -56,34 +55,46 @@ export class View3D {
     return g;
   }
 
+  // Frees the GPU buffers of everything in the group (the last run's path, grid, stock).
+  disposeGroup() {
+    this.group.traverse((o) => {
+      o.geometry?.dispose();
+      for (const mat of [].concat(o.material || [])) mat.dispose();
+    });
+    this.group.clear();
+  }
+
   setModel(model) {
     this.model = model;
     this.lathe = model.lathe;
-    this.group.clear();
+    this.disposeGroup();
     const box = new THREE.Box3();
-    box.expandByPoint(this.toScene(model.start));
-    this.segments = [];
-    for (const m of model.moves) {
-      const e = m.event;
-      const kind = e.mode === 'rapid' ? 'rapid' : e.thread ? 'thread' : e.compensated || e.prog_end ? 'comp' : 'feed';
-      const pts = m.pts.map((p) => this.toScene(p));
-      pts.forEach((p) => box.expandByPoint(p));
-      this.segments.push({ pts, kind, index: m.index });
+    box.expandByPoint(this.toScene(new Array(model.axes).fill(0)));
+    if (model.bounds) {
+      box.expandByPoint(new THREE.Vector3(...model.bounds.min));
+      box.expandByPoint(new THREE.Vector3(...model.bounds.max));
     }
     if (box.isEmpty()) box.set(new THREE.Vector3(-50, -50, -50), new THREE.Vector3(50, 50, 50));
     const size = box.getSize(new THREE.Vector3()).length() || 100;
     box.expandByScalar(size * 0.05);
     this.bounds = box;
-    // Two layers per kind: done (bright) and to come (dim); rebuilt when the step changes.
+    // The whole path is one vertex buffer with a colour per vertex, uploaded once. What is
+    // done is drawn bright, what is to come dim: two draw ranges of the same attributes.
+    const position = new THREE.BufferAttribute(model.vertices, 3);
+    const color = new THREE.BufferAttribute(model.colors, 3, true);
     this.paths = {};
-    for (const kind of Object.keys(COLORS))
-      for (const done of [true, false]) {
-        const geo = new THREE.BufferGeometry();
-        const mat = new THREE.LineBasicMaterial({ color: COLORS[kind], transparent: !done, opacity: done ? 1 : 0.28 });
-        const line = new THREE.LineSegments(geo, mat);
-        this.paths[`${kind}:${done}`] = line;
-        this.group.add(line);
-      }
+    for (const done of [true, false]) {
+      const geo = new THREE.BufferGeometry();
+      geo.setAttribute('position', position);
+      geo.setAttribute('color', color);
+      geo.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
+      const mat = new THREE.LineBasicMaterial({ vertexColors: true, transparent: !done, opacity: done ? 1 : 0.28 });
+      const line = new THREE.LineSegments(geo, mat);
+      line.frustumCulled = false;
+      this.paths[done] = line;
+      this.group.add(line);
+    }
+    this.vertexCount = model.vertices.length / 3;
     const grid = new THREE.GridHelper(Math.ceil(size / 10) * 20, 20, 0x3a4048, 0x262b31);
     if (!this.lathe) grid.rotation.x = Math.PI / 2;
     else grid.rotation.x = 0;
@@ -107,37 +118,35 @@ export class View3D {
     }
     this.host.dataset.stock = stock ? model.answer.stock.type : 'none';
     this.scene.remove(this.tool);
+    this.tool.traverse((o) => {
+      o.geometry?.dispose();
+      o.material?.dispose();
+    });
     // Sized to the part (mm or inch); on a lathe it stands along X, as a turret tool would.
     this.tool = this.makeTool(Math.min(10, size / 40));
     this.scene.add(this.tool);
-    this.lastDone = -2;
     this.setView(this.lathe ? 'front' : 'iso');
   }
 
-  // progressIndex: events before it are done.
-  setProgress(doneEvents, toolWork) {
+  // verticesDone: the vertices of the moves done so far (model.js verticesDone); only the
+  // two draw ranges change.
+  setProgress(verticesDone, toolWork) {
     if (!this.model) return;
-    if (doneEvents !== this.lastDone) {
-      this.lastDone = doneEvents;
-      const buf = {};
-      for (const k of Object.keys(this.paths)) buf[k] = [];
-      for (const s of this.segments) {
-        const b = buf[`${s.kind}:${s.index < doneEvents}`];
-        for (let j = 1; j < s.pts.length; j++) b.push(s.pts[j - 1].x, s.pts[j - 1].y, s.pts[j - 1].z, s.pts[j].x, s.pts[j].y, s.pts[j].z);
-      }
-      for (const [k, arr] of Object.entries(buf)) {
-        const geo = this.paths[k].geometry;
-        geo.setAttribute('position', new THREE.Float32BufferAttribute(arr, 3));
-        geo.computeBoundingSphere();
-      }
-    }
+    const k = Math.max(0, Math.min(verticesDone, this.vertexCount));
+    this.paths[true].geometry.setDrawRange(0, k);
+    this.paths[false].geometry.setDrawRange(k, this.vertexCount - k);
     if (toolWork) this.tool.position.copy(this.toScene(toolWork));
     this.draw();
   }
 
   setView(name) {
     const b = this.bounds, c = b.getCenter(new THREE.Vector3());
-    const d = b.getSize(new THREE.Vector3()).length() * 1.5 + 1;
+    // Far enough for the bounding sphere to fit the narrower of the two fields of view: a
+    // view taller than wide is limited by its horizontal one.
+    const radius = b.getSize(new THREE.Vector3()).length() / 2 || 50;
+    const vfov = THREE.MathUtils.degToRad(this.camera.fov);
+    const hfov = 2 * Math.atan(Math.tan(vfov / 2) * this.camera.aspect);
+    const d = (radius / Math.sin(Math.min(vfov, hfov) / 2)) * 1.05 + 1;
     const dirs = {
       iso: new THREE.Vector3(1, -1.2, 0.9),
       top: new THREE.Vector3(0, -0.0001, 1),

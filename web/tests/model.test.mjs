@@ -1,9 +1,19 @@
 // The front end's pure parts, without a browser: Fanuc highlighting, and the timeline model
-// (arcs drawn round, the tool part-way through a move, state folded from the steps).
+// built from the binary answer of a real run (`ncvm serve-worker`, the process the server
+// starts): arcs drawn round, the tool part-way through a move, the state folded from the
+// sparse deltas, blocks, and the draw range of each event.
+//   NCVM_BIN=build/release/bin/ncvm node --test web/tests/model.test.mjs
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { tokenize } from '../src/highlight.js';
-import { buildModel, toolAt, timeBreakdown, timeByTool } from '../src/model.js';
+import { FrameReader } from '../src/wire.js';
+import { ModelBuilder, toolAt, stateAt, eventAt, notesOf, verticesDone, nextBlockEnd, prevBlockEnd, timeBreakdown, timeByTool } from '../src/model.js';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const bin = process.env.NCVM_BIN || path.join(here, '../../build/release/bin/ncvm');
 
 const kinds = (line) => tokenize(line).filter((t) => t.cls !== 'ws').map((t) => `${t.cls}:${t.text}`);
 
@@ -18,59 +28,96 @@ test('Fanuc tokens', () => {
   assert.equal(tokenize(line).map((t) => t.text).join(''), line);
 });
 
-const move = (o) => JSON.stringify({ type: 'move', file: 'p.nc', prog: 'O1', n: null, feed: 100, length: 1, time: 1, ...o });
+// The binary answer of one run, fed to the model in chunks of `chunk` bytes (as a stream).
+function modelOf(program, setup, chunk = 777) {
+  const req = { program, name: 'p.nc', format: 'binary' };
+  if (setup) req.setup = setup;
+  const r = spawnSync(bin, ['serve-worker'], { input: JSON.stringify(req), maxBuffer: 1 << 28 });
+  assert.equal(r.status, 0, String(r.stderr));
+  const frames = new FrameReader(), b = new ModelBuilder();
+  const bytes = new Uint8Array(r.stdout.buffer, r.stdout.byteOffset, r.stdout.length);
+  for (let at = 0; at < bytes.length; at += chunk) for (const f of frames.push(bytes.subarray(at, at + chunk))) b.add(f);
+  assert.equal(frames.pending, 0);
+  return b.model();
+}
 
-test('timeline model', () => {
-  const answer = {
-    machine: { kind: 'mill', axes: 3 },
-    trace: [
-      move({ line: 2, mode: 'linear', start: [0, 0, 0], end: [10, 0, 0], mstart: [5, 0, 0], mend: [15, 0, 0] }),
-      // Half a circle CCW about (10, 5): through (15, 5).
-      move({ line: 3, mode: 'ccw', start: [10, 0, 0], end: [10, 10, 0], mstart: [15, 0, 0], mend: [15, 10, 0], center: [10, 5, 0], plane: 17 }),
-      JSON.stringify({ type: 'dwell', file: 'p.nc', line: 4, n: null, prog: 'O1', time: 2 }),
-    ].join('\n') + '\n',
-    steps: [{ b: 2, t: 1, l: { '#1': 5 } }, { b: 3, t: 2, l: { '#1': 6 }, c: { '#100': 1 } }, { b: 4, t: 4, l: { '#1': null } }],
-    state: {},
-  };
-  const m = buildModel(answer);
-  assert.equal(m.events.length, 3);
-  assert.equal(m.blocks.length, 3);
-  assert.deepEqual(m.states[1].locals, { '#1': 6 });
-  assert.deepEqual(m.states[1].common, { '#100': 1 });
-  assert.deepEqual(m.states[2].locals, {});
-  assert.ok(m.states[1].changed.has('#1'));
-  // The arc bulges to X15 (CCW from the bottom), not to X5.
-  const xs = m.moves[1].pts.map((p) => p[0]);
-  assert.ok(Math.abs(Math.max(...xs) - 15) < 1e-9 && Math.min(...xs) > 10 - 1e-9);
-  // Half-way through the first move: X5, 5 to go, machine = work + the move's offset (5).
-  const t = toolAt(m, 0.5);
+const MILL = `O0001
+G21 G90 G17 G54
+#1 = 5
+G00 X0 Y0 Z0
+G01 X10. F600.
+G03 X10. Y10. I0 J5.
+G04 P2000
+#1 = 6
+#100 = 1
+T5 M06
+G00 Z5.
+M30
+`;
+
+test('timeline model of a run', () => {
+  const m = modelOf(MILL);
+  assert.equal(m.answer.ok, true, JSON.stringify(m.answer));
+  assert.equal(m.answer.state.end, 'M30');
+  assert.equal(m.moves, 4);
+  const types = Array.from({ length: m.n }, (_, i) => eventAt(m, i).type);
+  assert.deepEqual(types.filter((t) => t !== 'aux'), ['move', 'move', 'move', 'dwell', 'tool', 'tool', 'move']);
+  // The arc (CCW about X10 Y5 from X10 Y0) bulges to X15, not to X5.
+  const arc = types.indexOf('move') + 2;
+  assert.equal(eventAt(m, arc).mode, 'ccw');
+  const v0 = verticesDone(m, arc), v1 = verticesDone(m, arc + 1);
+  const xs = [];
+  for (let v = v0; v < v1; v++) xs.push(m.vertices[v * 3]);
+  assert.ok(xs.length >= 8, `${xs.length} vertices for a half circle`);
+  assert.ok(Math.abs(Math.max(...xs) - 15) < 1e-3 && Math.min(...xs) > 10 - 1e-3, `${Math.min(...xs)}..${Math.max(...xs)}`);
+  // Half-way through the G01 (event arc - 1): X5, 5 to go.
+  const t = toolAt(m, arc - 1 + 0.5);
   assert.deepEqual(t.work.map((v) => +v.toFixed(6)), [5, 0, 0]);
   assert.deepEqual(t.togo.map((v) => +v.toFixed(6)), [5, 0, 0]);
-  assert.deepEqual(t.machine.map((v) => +v.toFixed(6)), [10, 0, 0]);
   // Half-way through the arc: at its far point (15, 5).
-  const a = toolAt(m, 1.5);
+  const a = toolAt(m, arc + 0.5);
   assert.ok(Math.abs(a.work[0] - 15) < 0.01 && Math.abs(a.work[1] - 5) < 0.01, `${a.work}`);
-  assert.deepEqual(timeBreakdown(m), { rapid: 0, feed: 2, thread: 0, dwell: 2 });
-  assert.deepEqual(timeByTool(m), { T0: 4 });
-  const withTool = buildModel({
-    ...answer,
-    trace: JSON.stringify({ type: 'tool', file: 'p.nc', line: 1, n: null, prog: 'O1', tool: 5, change: true }) + '\n' + answer.trace,
-    steps: [{}, ...answer.steps],
-  });
-  assert.deepEqual(timeByTool(withTool), { T5: 4 });
+  // Variables: #1 = 5 before the moves, 6 after the dwell; #100 set; #5041- the work position.
+  const s = stateAt(m, arc);
+  assert.equal(s.locals['#1'], 5);
+  assert.equal(s.system['#5041'], 10);
+  assert.equal(s.system['#5042'], 10);
+  const dwell = types.indexOf('dwell');
+  const later = stateAt(m, m.n - 1);
+  assert.equal(later.locals['#1'], 6);
+  assert.equal(later.common['#100'], 1);
+  assert.equal(later.modal.T, 5);
+  assert.equal(later.modal['1'], 0); // G00 last
+  assert.equal(stateAt(m, dwell).locals['#1'], 5);
+  // Blocks: stepping visits each event's block and comes back.
+  let p = 0, visited = 0;
+  for (let e; (e = nextBlockEnd(m, p)) !== null; p = e) visited++;
+  assert.equal(p, m.n);
+  assert.ok(visited >= 6);
+  assert.equal(prevBlockEnd(m, p, false), m.blockLast[m.blockLast.length - 2] + 1);
+  const tb = timeBreakdown(m);
+  assert.ok(Math.abs(tb.dwell - 2) < 1e-9, JSON.stringify(tb));
+  assert.ok(Math.abs(tb.rapid + tb.feed + tb.dwell - m.answer.state.cycle_time) < 1e-6, `${JSON.stringify(tb)} vs ${m.answer.state.cycle_time}`);
+  const byTool = timeByTool(m);
+  assert.ok(byTool.T5 > 0 && byTool.T0 > 2, JSON.stringify(byTool));
+  assert.deepEqual(notesOf(m).map((e) => e.type).filter((t) => t !== 'aux'), ['dwell', 'tool', 'tool']);
 });
 
 test('a lathe arc is round in radius, X given as a diameter', () => {
-  const answer = {
-    machine: { kind: 'lathe', axes: 3 },
-    // X100 Z0 to X200 Z-50 with the centre at X100 Z-50 (radius 50): a quarter circle, G18.
-    trace: move({ line: 2, mode: 'ccw', start: [100, 0, 0], end: [200, 0, -50], mstart: [100, 0, 0], mend: [200, 0, -50], center: [100, 0, -50], plane: 18 }) + '\n',
-    steps: [{}],
-    state: {},
-  };
-  const m = buildModel(answer);
-  for (const p of m.moves[0].pts) {
-    const r = Math.hypot(p[0] / 2 - 50, p[2] + 50);
-    assert.ok(Math.abs(r - 50) < 1e-6, `radius ${r} at ${p}`);
+  // X100 Z0 to X200 Z-50 about X100 Z-50 (radius 50, a quarter circle): drawn as Z right,
+  // radius up.
+  const m = modelOf('O0001\nG18 G21 G90 G99\nG00 X100. Z0.\nG03 X200. Z-50. K-50. F0.2 S500 M03\nM30\n', '[machine]\nkind = "lathe"\n');
+  assert.equal(m.answer.ok, true, JSON.stringify(m.answer));
+  assert.equal(m.lathe, true);
+  const arc = Array.from({ length: m.n }, (_, i) => eventAt(m, i)).find((e) => e.mode === 'ccw').index;
+  for (let v = verticesDone(m, arc); v < verticesDone(m, arc + 1); v++) {
+    const z = m.vertices[v * 3], r = m.vertices[v * 3 + 2];
+    assert.ok(Math.abs(Math.hypot(r - 50, z + 50) - 50) < 1e-3, `radius at z ${z} r ${r}`);
   }
+});
+
+test('a failed run ends with an end frame that says why', () => {
+  const m = modelOf('O0001\nG00 X1.\nM30\n', '[machine\n');
+  assert.equal(m.answer.ok, false);
+  assert.match(m.answer.error, /setup error/);
 });
