@@ -6,6 +6,7 @@ import { View3D } from './view3d.js';
 import { buildModel, toolAt } from './model.js';
 import { Workspace } from './workspace.js';
 import { PathLink } from './link.js';
+import { initTheme, themeGrid } from './theme.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -13,6 +14,7 @@ const SUB = 10; // slider positions per event: scrubbing shows a move part-way
 
 const editor = new Editor($('editor'));
 const view = new View3D($('view'));
+initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
 const ui = { model: null, p: 0, source: { kind: 'new', root: null, dir: '', name: 'program.nc' }, stale: false };
@@ -136,6 +138,7 @@ async function run() {
   for (const w of [...answer.check.warnings, ...s.warnings]) if (mine(w.file)) marks.push({ line: w.line, kind: 'warning', text: `${w.code} ${w.text}` });
   editor.setMarks(marks);
   view.setModel(model);
+  themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
   $('scrub').max = model.events.length * SUB;
