@@ -7,6 +7,8 @@ import { buildModel, toolAt } from './model.js';
 import { Workspace } from './workspace.js';
 import { PathLink } from './link.js';
 import { initTheme, themeGrid } from './theme.js';
+import { recordRun } from './counters.js';
+import { Playback } from './playback.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -142,6 +144,7 @@ async function run() {
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
   $('scrub').max = model.events.length * SUB;
+  recordRun(model, ui.source.name);
   renderMessages($('p-messages'), model, pick);
   renderTime($('p-time'), model);
   setStatus(
@@ -169,7 +172,7 @@ function goTo(pos) {
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = m.events[idx];
   const state = idx >= 0 ? m.states[idx] : null;
-  renderPosition($('p-position'), m, tool);
+  renderPosition($('p-position'), m, tool, state || m.states[0]);
   renderVariables($('p-vars'), state, ui.shown);
   ui.shown = state;
   renderOffsets($('p-offsets'), state || m.states[0]);
@@ -187,7 +190,7 @@ function goTo(pos) {
 // Single block: to the end of the next (previous) block that made the machine do something.
 function step(dir) {
   const m = ui.model;
-  if (!m) return;
+  if (!m || playback.step(dir)) return;
   const done = Math.floor(ui.p / SUB);
   if (dir > 0) {
     const b = m.blocks.find((x) => x.last + 1 > done);
@@ -198,15 +201,21 @@ function step(dir) {
   }
 }
 
+const playback = new Playback({ model: () => ui.model, position: () => ui.p, goTo, sub: SUB });
 $('scrub').addEventListener('input', (e) => goTo(Number(e.target.value)));
 $('fwd').addEventListener('click', () => step(1));
 $('back').addEventListener('click', () => step(-1));
 $('run').addEventListener('click', run);
 document.addEventListener('keydown', (e) => {
   if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) run();
-  if (['TEXTAREA', 'INPUT', 'SELECT'].includes(e.target.tagName)) return;
+  // Keys typed in the editor (contenteditable) or a field are theirs, not the timeline's.
+  if (['TEXTAREA', 'INPUT', 'SELECT'].includes(e.target.tagName) || e.target.closest?.('.cm-editor')) return;
   if (e.key === 'ArrowRight') step(1);
   if (e.key === 'ArrowLeft') step(-1);
+  if (e.key === ' ' && e.target.tagName !== 'BUTTON') {
+    e.preventDefault();
+    $('play').click();
+  }
 });
 
 (async () => {
