@@ -26,7 +26,7 @@ export function initTheme(view, button) {
 export function themeGrid(view) {
   const colour = getComputedStyle(document.documentElement).getPropertyValue('--view-grid').trim();
   view.scene.traverse((o) => {
-    if (!o.isGridHelper) return;
+    if (o.type !== 'GridHelper') return;
     if (colour) {
       o.material.vertexColors = false;
       o.material.color.set(colour);

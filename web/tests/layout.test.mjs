@@ -58,7 +58,7 @@ test('the axes do not share a colour with any kind of move', async () => {
     const scene = document.getElementById('view').link.view.scene;
     const axes = [], paths = [];
     scene.traverse((o) => {
-      if (!o.isLine || o.isGridHelper) return;
+      if (!o.isLine || o.type === 'GridHelper') return;
       let inAxes = false;
       for (let p = o; p; p = p.parent) inAxes ||= p.name === 'axes' || p.isAxesHelper;
       const c = o.material.color;
