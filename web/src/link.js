@@ -49,6 +49,10 @@ export class PathLink {
       new THREE.LineBasicMaterial({ color: 0xffffff, depthTest: false, transparent: true }),
     );
     this.overlay.renderOrder = 10;
+    window.addEventListener('themechange', () => {
+      this.overlay.material.color.set(this.colour());
+      this.view.draw();
+    });
     view.host.link = this; // the browser tests reach the link through the view's element
     const canvas = view.renderer.domElement;
     let down = null;
@@ -149,6 +153,10 @@ export class PathLink {
     this.setHighlight(this.index.movesOf(line));
   }
 
+  colour() {
+    return getComputedStyle(document.documentElement).getPropertyValue('--path-highlight').trim() || '#ffffff';
+  }
+
   setHighlight(moves) {
     const pos = [];
     let segments = 0;
@@ -160,8 +168,7 @@ export class PathLink {
     const geo = this.overlay.geometry;
     geo.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
     geo.computeBoundingSphere();
-    const colour = getComputedStyle(document.body).getPropertyValue('--path-highlight').trim();
-    this.overlay.material.color.set(colour || '#ffffff');
+    this.overlay.material.color.set(this.colour());
     if (!this.overlay.parent) this.view.scene.add(this.overlay);
     this.view.host.dataset.highlightMoves = String(moves.length);
     this.view.draw();

@@ -7,6 +7,9 @@ import { toolAt, stateAt, eventAt, notesOf, verticesDone, nextBlockEnd, prevBloc
 import { RunProgress } from './progress.js';
 import { Workspace } from './workspace.js';
 import { PathLink } from './link.js';
+import { initTheme, themeGrid } from './theme.js';
+import { recordRun } from './counters.js';
+import { Playback } from './playback.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -15,6 +18,7 @@ const SUB = 10; // slider positions per event: scrubbing shows a move part-way
 const editor = new Editor($('editor'));
 const view = new View3D($('view'));
 const progress = new RunProgress($('view'));
+initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
 const ui = { model: null, p: 0, source: { kind: 'new', root: null, dir: '', name: 'program.nc' }, stale: false };
@@ -149,9 +153,11 @@ async function run() {
   for (const w of [...answer.check.warnings, ...s.warnings]) if (mine(w.file)) marks.push({ line: w.line, kind: 'warning', text: `${w.code} ${w.text}` });
   editor.setMarks(marks);
   view.setModel(model);
+  themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
   $('scrub').max = model.n * SUB;
+  recordRun(model, ui.source.name);
   renderMessages($('p-messages'), model, pick);
   renderTime($('p-time'), model);
   setStatus(
@@ -180,7 +186,7 @@ function goTo(pos) {
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
   const state = stateAt(m, idx);
-  renderPosition($('p-position'), m, tool);
+  renderPosition($('p-position'), m, tool, state || stateAt(m, 0));
   renderVariables($('p-vars'), state, ui.shown);
   ui.shown = state;
   renderOffsets($('p-offsets'), state || stateAt(m, 0));
@@ -198,7 +204,7 @@ function goTo(pos) {
 // Single block: to the end of the next (previous) block that made the machine do something.
 function step(dir) {
   const m = ui.model;
-  if (!m) return;
+  if (!m || playback.step(dir)) return;
   const done = Math.floor(ui.p / SUB);
   if (dir > 0) {
     const end = nextBlockEnd(m, done);
@@ -206,15 +212,21 @@ function step(dir) {
   } else goTo(prevBlockEnd(m, done, ui.p % SUB !== 0) * SUB);
 }
 
+const playback = new Playback({ model: () => ui.model, position: () => ui.p, goTo, sub: SUB });
 $('scrub').addEventListener('input', (e) => goTo(Number(e.target.value)));
 $('fwd').addEventListener('click', () => step(1));
 $('back').addEventListener('click', () => step(-1));
 $('run').addEventListener('click', run);
 document.addEventListener('keydown', (e) => {
   if (e.key === 'Enter' && (e.ctrlKey || e.metaKey)) run();
-  if (['TEXTAREA', 'INPUT', 'SELECT'].includes(e.target.tagName)) return;
+  // Keys typed in the editor (contenteditable) or a field are theirs, not the timeline's.
+  if (['TEXTAREA', 'INPUT', 'SELECT'].includes(e.target.tagName) || e.target.closest?.('.cm-editor')) return;
   if (e.key === 'ArrowRight') step(1);
   if (e.key === 'ArrowLeft') step(-1);
+  if (e.key === ' ' && e.target.tagName !== 'BUTTON') {
+    e.preventDefault();
+    $('play').click();
+  }
 });
 
 (async () => {

@@ -5,6 +5,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { drawStock } from './stock.js';
+import { makeAxes } from './axes.js';
 
 const BG = 0x15181d;
 
@@ -100,7 +101,7 @@ export class View3D {
     else grid.rotation.x = 0;
     grid.position.copy(this.lathe ? new THREE.Vector3(box.getCenter(new THREE.Vector3()).x, 0, 0) : new THREE.Vector3(0, 0, box.min.z));
     this.group.add(grid);
-    this.group.add(new THREE.AxesHelper(size * 0.15));
+    this.group.add(makeAxes(size * 0.15, this.lathe));
     if (this.lathe) {
       // The spindle axis (X = 0).
       const axis = new THREE.BufferGeometry().setFromPoints([
