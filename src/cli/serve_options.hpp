@@ -31,7 +31,7 @@ inline void addServeOptions(CLI::App* serve, ServeOptions& o) {
   serve->add_option("--root", o.roots, "folder of programs the page may open (repeatable)");
   serve->add_option("--timeout", o.timeoutSeconds, "wall-clock limit of one run, seconds")->capture_default_str();
   serve->add_option("--max-blocks", o.maxBlocks, "most blocks one run may execute")->capture_default_str();
-  serve->add_option("--threads", o.threads, "requests served at once")->capture_default_str();
+  serve->add_option("--threads", o.threads, "runs at once (connections are served beside them)")->capture_default_str();
 }
 
 }  // namespace ncvm

@@ -4,6 +4,7 @@
 // name wins; later duplicates are reported as warnings.
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -38,8 +39,11 @@ class ProgramStore {
   void rewindStreams();
   // Same for text already in memory (tests, the server).
   std::vector<const Program*> addText(std::string_view text, const std::string& name);
-  // Every program file in a folder (not recursive), in name order.
-  void addFolder(const std::string& dir);
+  // Every program file in a folder (not recursive), in name order. `accept`, when given,
+  // decides for each file found (the server confines a folder's files, symlinks followed,
+  // to its roots: server/safe_path.hpp).
+  void addFolder(const std::string& dir,
+                 const std::function<bool(const std::string&)>& accept = {});
 
   const Program* byNumber(int32_t number) const;
   const Program* byName(std::string_view name) const;

@@ -65,6 +65,56 @@ nlohmann::json failure(const std::string& message) {
   return {{"ok", false}, {"error", message}};
 }
 
+// A folder of the server's machine and how answers name it.
+struct NamedFolder {
+  std::filesystem::path path;  // canonical
+  std::string name;
+};
+
+std::vector<NamedFolder> namedFolders(const nlohmann::json& request) {
+  std::vector<NamedFolder> out;
+  std::error_code ec;
+  auto it = request.find("roots");
+  if (it != request.end() && it->is_array())
+    for (const auto& r : *it)
+      if (r.is_object() && r.value("path", "") != "" && r.value("name", "") != "")
+        if (auto p = std::filesystem::canonical(r["path"].get<std::string>(), ec); !ec)
+          out.push_back({p, r["name"].get<std::string>()});
+  if (std::string macros = bundledMacrosFolder(); !macros.empty())
+    if (auto p = std::filesystem::canonical(macros, ec); !ec) out.push_back({p, "macros"});
+  return out;
+}
+
+// `text` with every server folder replaced by its name (file names, error messages).
+std::string withFolderNames(std::string text, const std::vector<NamedFolder>& folders) {
+  for (const auto& f : folders) {
+    const std::string abs = f.path.string();
+    for (size_t at = text.find(abs); at != std::string::npos;
+         at = text.find(abs, at + f.name.size()))
+      text.replace(at, abs.size(), f.name);
+  }
+  return text;
+}
+
+// Every string of an answer (file names in the state, the trace's text, the checks, the
+// warnings) with the server's folders named.
+void renameFolders(nlohmann::json& j, const std::vector<NamedFolder>& folders) {
+  if (j.is_string())
+    j = withFolderNames(j.get<std::string>(), folders);
+  else if (j.is_structured())
+    for (auto& v : j) renameFolders(v, folders);
+}
+
+// The programs of a lib folder, only those inside its root (symlinks followed).
+void addConfinedLibrary(Session& session, const std::string& dir,
+                        const std::vector<NamedFolder>& roots) {
+  std::filesystem::path confine = dir;
+  for (const auto& r : roots)
+    if (r.name != "macros" && isInside(r.path, dir)) confine = r.path;
+  session.store().addFolder(
+      dir, [&confine](const std::string& file) { return isInside(confine, file); });
+}
+
 }  // namespace
 
 nlohmann::json runJob(const nlohmann::json& request) {
@@ -78,6 +128,7 @@ nlohmann::json runJob(const nlohmann::json& request) {
   std::string name = request.value("name", std::string("program.nc"));
   if (name.empty() || name.size() > 255) name = "program.nc";
 
+  const std::vector<NamedFolder> folders = namedFolders(request);
   try {
     Setup setup = defaultSetup();
     if (request.contains("setup") && request["setup"].is_string())
@@ -96,7 +147,7 @@ nlohmann::json runJob(const nlohmann::json& request) {
     if (!session.main()) return failure("no program in the text");
     if (request.contains("libs") && request["libs"].is_array())
       for (const auto& dir : request["libs"])
-        if (dir.is_string()) session.addLibrary(dir.get<std::string>());
+        if (dir.is_string()) addConfinedLibrary(session, dir.get<std::string>(), folders);
     session.addBundledMacros();
 
     // A setup with [stock] gets its stock simulated, as `ncvm run --stock-out` would, but
@@ -124,11 +175,12 @@ nlohmann::json runJob(const nlohmann::json& request) {
                       {"axes", session.setup().reportedAxes()}};
     // The final stock (web/src/stock.js draws it); its analysis is state["stock"].
     if (!r.viewerStock.is_null()) out["stock"] = std::move(r.viewerStock);
+    renameFolders(out, folders);
     return out;
   } catch (const SetupError& e) {
-    return failure(std::string("setup error: ") + e.what());
+    return failure(withFolderNames(std::string("setup error: ") + e.what(), folders));
   } catch (const std::exception& e) {
-    return failure(e.what());
+    return failure(withFolderNames(e.what(), folders));
   }
 }
 

@@ -2,7 +2,11 @@
 
 #include <httplib.h>
 
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -40,16 +44,46 @@ const char* contentType(const fs::path& p) {
 
 }  // namespace
 
+// At most `limit` runs at once; a request waits for a free slot at most `wait`.
+class RunSlots {
+ public:
+  explicit RunSlots(int limit) : free_(std::max(1, limit)) {}
+  bool acquire(std::chrono::milliseconds wait) {
+    std::unique_lock lock(mutex_);
+    if (!freed_.wait_for(lock, wait, [this] { return free_ > 0; })) return false;
+    --free_;
+    return true;
+  }
+  void release() {
+    {
+      std::lock_guard lock(mutex_);
+      ++free_;
+    }
+    freed_.notify_one();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable freed_;
+  int free_;
+};
+
 struct WebServer::Impl {
+  explicit Impl(int runs) : slots(runs) {}
   httplib::Server http;
+  RunSlots slots;
 };
 
 WebServer::WebServer(ServerConfig config)
-    : config_(std::move(config)), impl_(std::make_unique<Impl>()) {
+    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.threads)) {
   httplib::Server& s = impl_->http;
   const ServerConfig& c = config_;
-  int threads = c.threads > 0 ? c.threads : 1;
-  s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  // Connection threads are cheap and many; the runs (worker processes) are bounded by
+  // RunSlots. Before, one pool bounded both, so 8 slow connections held every thread.
+  const int connections = std::max(c.connections, std::max(c.threads, 1));
+  s.new_task_queue = [connections] {
+    return new httplib::ThreadPool(static_cast<size_t>(connections));
+  };
   s.set_payload_max_length(c.maxBodyBytes);
   // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which lets a second server
   // listen on the same port and silently take half of the connections.
@@ -57,21 +91,24 @@ WebServer::WebServer(ServerConfig config)
     int yes = 1;
     ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   });
-  s.set_read_timeout(10, 0);
+  s.set_read_timeout(c.readTimeoutSeconds, 0);
   s.set_write_timeout(30, 0);
+  s.set_keep_alive_timeout(c.idleTimeoutSeconds);
+  s.set_keep_alive_max_count(static_cast<size_t>(std::max(1, c.requestsPerConnection)));
 
   const bool loopbackOnly = isLoopback(c.bind);
-  s.set_pre_routing_handler([loopbackOnly](const httplib::Request& req, httplib::Response& res) {
-    if (loopbackOnly)
-      if (auto refusal =
-              foreignHostOrOrigin(req.get_header_value("Host"), req.get_header_value("Origin"))) {
-        sendError(res, 403, *refusal);
-        return httplib::Server::HandlerResponse::Handled;
-      }
-    res.set_header("X-Content-Type-Options", "nosniff");
-    res.set_header("Cache-Control", "no-store");
-    return httplib::Server::HandlerResponse::Unhandled;
-  });
+  s.set_pre_routing_handler(
+      [this, loopbackOnly](const httplib::Request& req, httplib::Response& res) {
+        if (loopbackOnly)
+          if (auto refusal = foreignHostOrOrigin(req.get_header_value("Host"),
+                                                 req.get_header_value("Origin"), config_.port)) {
+            sendError(res, 403, *refusal);
+            return httplib::Server::HandlerResponse::Handled;
+          }
+        res.set_header("X-Content-Type-Options", "nosniff");
+        res.set_header("Cache-Control", "no-store");
+        return httplib::Server::HandlerResponse::Unhandled;
+      });
 
   s.Get("/api/info", [this](const httplib::Request&, httplib::Response& res) {
     const ServerConfig& cf = config_;
@@ -111,9 +148,18 @@ WebServer::WebServer(ServerConfig config)
     RunRequest run = runRequestFromBody(req.body, cf);
     if (run.status != 200) return sendError(res, run.status, run.error);
     const nlohmann::json& job = run.job;
-    WorkerResult w =
-        runWorker(cf.workerExe, job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
-                  cf.worker);
+    if (!impl_->slots.acquire(cf.worker.timeout))
+      return sendError(res, 503,
+                       "busy: " + std::to_string(cf.threads) + " runs in progress; try again");
+    WorkerResult w;
+    try {
+      w = runWorker(cf.workerExe,
+                    job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), cf.worker);
+    } catch (...) {
+      impl_->slots.release();
+      throw;
+    }
+    impl_->slots.release();
     switch (w.status) {
       case WorkerResult::Status::Ok:
         break;

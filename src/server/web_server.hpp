@@ -27,7 +27,13 @@ struct ServerConfig {
   RunCaps caps;
   WorkerLimits worker;
   uint64_t maxBodyBytes = 2u << 20;  // a request
-  int threads = 8;                   // concurrent requests (and so concurrent runs)
+  int threads = 8;                   // concurrent runs (worker processes)
+  // Connections served at once. Far more than the runs: an idle or slow connection holds a
+  // connection thread, never a run, so 50 idle and 8 slow ones leave room for the page.
+  int connections = 128;
+  int readTimeoutSeconds = 5;  // a connection that sends nothing for this long is closed
+  int idleTimeoutSeconds = 2;  // between two requests on one connection
+  int requestsPerConnection = 100;
 };
 
 class WebServer {
