@@ -64,11 +64,13 @@ OutputFolder::OutputFolder(std::string path) : path_(std::move(path)) {
   }
   if (temp_.empty())
     throw std::runtime_error(fmt::format("{}: cannot create a temporary folder", path_));
+  slot_ = registerTemp(temp_, true);
 }
 
 OutputFolder::~OutputFolder() {
   std::error_code ec;
   if (!committed_) fs::remove_all(temp_, ec);
+  unregisterTemp(slot_);
 }
 
 void OutputFolder::commit() {
@@ -81,8 +83,11 @@ void OutputFolder::commit() {
     // One step: the new set takes the old one's place, the old one the temporary's name.
     if (::renameat2(AT_FDCWD, temp_.c_str(), AT_FDCWD, path_.c_str(), RENAME_EXCHANGE) != 0)
       throw std::runtime_error(fmt::format("{}: cannot replace: {}", path_, std::strerror(errno)));
+    // The temporary name now holds the previous set: the handler may still remove it.
     fs::remove_all(temp_, ec);
   }
+  unregisterTemp(slot_);
+  slot_ = -1;
   committed_ = true;
 }
 

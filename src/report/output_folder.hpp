@@ -3,8 +3,8 @@
 // beside DIR, and commit() puts the whole folder in place at once (a rename, or an atomic
 // exchange with the previous DIR, which is then removed). A kill or a full disk leaves
 // either the previous set or the new one, never files of two runs side by side; an
-// uncommitted temporary folder is removed by the destructor, or by the next run when its
-// process was killed (temp_cleanup.hpp).
+// uncommitted temporary folder is removed by the destructor, on SIGINT/SIGTERM/SIGHUP, or by
+// the next run when its process was killed (temp_cleanup.hpp).
 #include <string>
 
 namespace ncvm {
@@ -24,6 +24,7 @@ class OutputFolder {
 
  private:
   std::string path_, temp_;
+  int slot_ = -1;  // temp_cleanup's registration of temp_
   bool committed_ = false;
 };
 

@@ -1,8 +1,10 @@
 #include "report/temp_cleanup.hpp"
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <signal.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <array>
@@ -18,7 +20,7 @@ namespace ncvm {
 
 namespace {
 // A fixed table the signal handler can read without locks or allocation. A slot is free (0),
-// being filled (1) or holds a path the handler removes (2).
+// being filled (1) or holds a path the handler removes (2: a file, 3: a folder of files).
 constexpr size_t kSlots = 256;
 struct Slot {
   std::atomic<int> state{0};
@@ -26,9 +28,32 @@ struct Slot {
 };
 std::array<Slot, kSlots> slots;
 
+// A folder of plain files, with system calls only (opendir and readdir may allocate).
+void removeFolder(const char* path) {
+  int fd = ::open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(8) char buf[4096];
+  long n = 0;
+  while ((n = ::syscall(SYS_getdents64, fd, buf, sizeof buf)) > 0) {
+    for (long at = 0; at < n;) {
+      // struct linux_dirent64: inode, offset, record length, type, name.
+      unsigned short length = 0;
+      std::memcpy(&length, buf + at + 16, sizeof length);
+      const char* name = buf + at + 19;
+      if (std::strcmp(name, ".") != 0 && std::strcmp(name, "..") != 0) ::unlinkat(fd, name, 0);
+      at += length;
+    }
+  }
+  ::close(fd);
+  ::rmdir(path);
+}
+
 void removeAndDie(int sig) {
-  for (Slot& s : slots)
-    if (s.state.load(std::memory_order_acquire) == 2) ::unlink(s.path);
+  for (Slot& s : slots) {
+    const int state = s.state.load(std::memory_order_acquire);
+    if (state == 2) ::unlink(s.path);
+    if (state == 3) removeFolder(s.path);
+  }
   // Die of the same signal, as without the handler: the parent sees why the run ended.
   struct sigaction dfl {};
   dfl.sa_handler = SIG_DFL;
@@ -90,13 +115,13 @@ void removeStaleTemps(const std::string& target) {
   ::closedir(d);
 }
 
-int registerTemp(const std::string& path) {
+int registerTemp(const std::string& path, bool folder) {
   if (path.size() >= PATH_MAX) return -1;
   for (size_t k = 0; k < kSlots; ++k) {
     int expected = 0;
     if (!slots[k].state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel)) continue;
     std::memcpy(slots[k].path, path.c_str(), path.size() + 1);
-    slots[k].state.store(2, std::memory_order_release);
+    slots[k].state.store(folder ? 3 : 2, std::memory_order_release);
     return static_cast<int>(k);
   }
   return -1;

@@ -19,9 +19,10 @@ std::string tempNameFor(const std::string& target, const std::string& random);
 // Removes the temporaries of `target` left by processes that no longer exist.
 void removeStaleTemps(const std::string& target);
 
-// The handlers remove registered paths. register returns a slot (or -1 when all are in use:
-// the file is then still removed on every normal path, only not on a signal).
-int registerTemp(const std::string& path);
+// The handlers remove registered paths: a file, or a folder of plain files (--stock-out's
+// set). register returns a slot (or -1 when all are in use: the file is then still removed
+// on every normal path, only not on a signal).
+int registerTemp(const std::string& path, bool folder = false);
 void unregisterTemp(int slot);
 
 }  // namespace ncvm

@@ -103,4 +103,15 @@ mkdir "$tmp/mine" && echo precious >"$tmp/mine/notes.txt"
 grep -q "not a stock output" "$tmp/err" || fail "stock-out over a user's folder: $(cat "$tmp/err")"
 [ "$(cat "$tmp/mine/notes.txt")" = precious ] || fail "the user's folder was touched"
 [ "$(temps)" = 0 ] || fail "stock-out left $(find "$tmp" -name '*.ncvm-*')"
-echo "atomic outputs: FIFO, stdin/stdout, 3 signals, file-size limit, /dev/full, a killed run's temporary, stock set: ok"
+# SIGTERM while the set is being made: its temporary folder goes too.
+printf '[stock]\nmin = [0, 0, -10]\nmax = [50, 50, 0]\n' >"$tmp/mill.toml"
+printf 'O0006\nT1M6\nG0X0Y0Z1.\nG1Z-1.F1000.\nWHILE[1EQ1]DO1\nG1X50.Y50.\nX0Y0\nEND1\nM30\n' >"$tmp/cut.nc"
+"$ncvm" run "$tmp/cut.nc" --setup "$tmp/mill.toml" --stock-out "$tmp/millstock" --set limits.max_blocks=20000000 -q &
+pid=$!
+for _ in $(seq 1 100); do [ "$(temps)" -gt 0 ] && break; sleep 0.02; done
+[ "$(temps)" -gt 0 ] || fail "stock-out: no temporary folder to remove"
+kill -TERM $pid
+wait $pid
+[ $? = 143 ] || fail "stock-out under SIGTERM: not killed by it"
+[ "$(temps)" = 0 ] || fail "SIGTERM left the stock set's $(find "$tmp" -name '*.ncvm-*')"
+echo "atomic outputs: FIFO, stdin/stdout, 3 signals, file-size limit, /dev/full, a killed run's temporary, stock set (and under SIGTERM): ok"

@@ -6,10 +6,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "report/temp_cleanup.hpp"
 
 using namespace ncvm;
 
@@ -140,5 +143,29 @@ TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreRemoved) {
   EXPECT_TRUE(std::filesystem::exists(live));
   EXPECT_TRUE(std::filesystem::exists(dir + "/state.json.keep"));
   EXPECT_EQ(slurp(out), "new");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TempCleanup, ASignalRemovesTheRegisteredFilesAndFolders) {
+  const std::string dir = freshFolder("signal");
+  const std::string file = dir + "/trace.jsonl.ncvm-1-aa.tmp",
+                    folder = dir + "/stock.ncvm-1-bb.tmp";
+  pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    installTempCleanup();
+    std::filesystem::create_directories(folder);
+    for (int k = 0; k < 300; ++k)
+      std::ofstream(folder + "/picture" + std::to_string(k) + ".png") << k;
+    std::ofstream(file) << "half a trace";
+    registerTemp(file);
+    registerTemp(folder, true);
+    ::raise(SIGTERM);
+    ::_exit(0);  // not reached: the handler dies of the signal
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+  EXPECT_EQ(entries(dir), 0u);
   std::filesystem::remove_all(dir);
 }
