@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "server/guarded_http.hpp"
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
 
@@ -69,13 +70,14 @@ class RunSlots {
 };
 
 struct WebServer::Impl {
-  explicit Impl(int runs) : slots(runs) {}
-  httplib::Server http;
+  Impl(int runs, ConnectionLimits limits) : http(limits), slots(runs) {}
+  GuardedHttpServer http;
   RunSlots slots;
 };
 
 WebServer::WebServer(ServerConfig config)
-    : config_(std::move(config)), impl_(std::make_unique<Impl>(config_.threads)) {
+    : config_(std::move(config)),
+      impl_(std::make_unique<Impl>(config_.threads, config_.connection)) {
   httplib::Server& s = impl_->http;
   const ServerConfig& c = config_;
   // Connection threads are cheap and many; the runs (worker processes) are bounded by
@@ -91,10 +93,8 @@ WebServer::WebServer(ServerConfig config)
     int yes = 1;
     ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   });
-  s.set_read_timeout(c.readTimeoutSeconds, 0);
-  s.set_write_timeout(30, 0);
-  s.set_keep_alive_timeout(c.idleTimeoutSeconds);
-  s.set_keep_alive_max_count(static_cast<size_t>(std::max(1, c.requestsPerConnection)));
+  // Read and idle timeouts, the request deadline and the bounds per connection and client
+  // are GuardedHttpServer's (c.connection).
 
   const bool loopbackOnly = isLoopback(c.bind);
   s.set_pre_routing_handler(
@@ -217,15 +217,15 @@ WebServer::~WebServer() {
 }
 
 int WebServer::bind() {
-  httplib::Server& s = impl_->http;
+  GuardedHttpServer& s = impl_->http;
   if (config_.port == 0) {
     int port = s.bind_to_any_port(config_.bind);
     if (port <= 0) throw std::runtime_error("cannot bind to " + config_.bind);
     config_.port = port;
-    return port;
-  }
-  if (!s.bind_to_port(config_.bind, config_.port))
+  } else if (!s.bind_to_port(config_.bind, config_.port)) {
     throw std::runtime_error("cannot bind to " + config_.bind + ":" + std::to_string(config_.port));
+  }
+  s.widenBacklog(std::max(128, config_.connections));
   return config_.port;
 }
 

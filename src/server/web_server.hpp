@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "server/connection_limits.hpp"
 #include "server/file_catalog.hpp"
 #include "server/run_job.hpp"
 #include "server/worker.hpp"
@@ -31,9 +32,7 @@ struct ServerConfig {
   // Connections served at once. Far more than the runs: an idle or slow connection holds a
   // connection thread, never a run, so 50 idle and 8 slow ones leave room for the page.
   int connections = 128;
-  int readTimeoutSeconds = 5;  // a connection that sends nothing for this long is closed
-  int idleTimeoutSeconds = 2;  // between two requests on one connection
-  int requestsPerConnection = 100;
+  ConnectionLimits connection;  // timeouts and bounds per connection and per client
 };
 
 class WebServer {
