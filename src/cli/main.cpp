@@ -11,11 +11,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <thread>
 #include <unistd.h>
 
 #include "app/compare.hpp"
 #include "app/machine_state.hpp"
+#include "app/machine_state_file.hpp"
 #include "app/session.hpp"
 #include "app/sweep.hpp"
 #include "cli/command_line.hpp"
@@ -24,7 +26,10 @@
 #include "core/program_files.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
+#include "report/clock_time.hpp"
 #include "report/html_report.hpp"
+#include "report/output_folder.hpp"
+#include "report/temp_cleanup.hpp"
 #include "report/trace_writer.hpp"
 #include "server/worker.hpp"
 #include "sim/deviation.hpp"
@@ -50,7 +55,8 @@ struct CommonOptions {
 void addSetupOptions(CLI::App* cmd, CommonOptions& o);
 
 void addCommon(CLI::App* cmd, CommonOptions& o) {
-  cmd->add_option("PROGRAM", o.programs, "program file(s); the first file's first program runs")->required();
+  cmd->add_option("PROGRAM", o.programs, "program file(s), - for standard input; the first file's first program runs")
+      ->required();
   addSetupOptions(cmd, o);
 }
 
@@ -71,8 +77,30 @@ Setup makeSetup(const CommonOptions& o) {
   return s;
 }
 
+// `-` as a program is standard input (an editor pipes the buffer in), read whole, within
+// limits.max_file_bytes; alarms name it <stdin>.
+std::string readStandardInput(uint64_t maxBytes) {
+  std::string text;
+  char buf[1 << 16];
+  size_t got = 0;
+  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
+    text.append(buf, got);
+    if (text.size() > maxBytes)
+      throw std::runtime_error(fmt::format("standard input: larger than limits.max_file_bytes = {}", maxBytes));
+  }
+  if (std::ferror(stdin))
+    throw std::runtime_error(fmt::format("standard input: cannot read: {}", std::strerror(errno)));
+  return text;
+}
+
 void loadPrograms(Session& session, const CommonOptions& o) {
-  for (const auto& p : o.programs) session.addProgramFile(p);
+  if (std::count(o.programs.begin(), o.programs.end(), "-") > 1)
+    throw std::runtime_error("standard input (-) can be only one of the programs");
+  for (const auto& p : o.programs)
+    if (p == "-")
+      session.addProgramText(readStandardInput(session.setup().limits.maxFileBytes), "<stdin>");
+    else
+      session.addProgramFile(p);
   for (const auto& l : o.libs) session.addLibrary(l);
   if (!o.noMacros) session.addBundledMacros();
 }
@@ -89,13 +117,9 @@ std::string alarmLine(const Alarm& a, const SourceFiles& files) {
   return s;
 }
 
-std::string hms(double seconds) {
-  auto total = static_cast<int64_t>(seconds);
-  return fmt::format("{}:{:02d}:{:05.2f}", total / 3600, total / 60 % 60, seconds - static_cast<double>(total / 60 * 60));
-}
-
 struct RunOutputs {
   std::string trace, state, output, machineState, stockOut, report;
+  double lockWait = 60;  // seconds a run waits for another holding the machine state
 };
 
 // One run; what it would print goes to `out` (stdout) and `err` (stderr), so batch runs on
@@ -107,17 +131,28 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   const std::string& statePath = outs.state;
   const std::string& outputPath = outs.output;
   const std::string& machineStatePath = outs.machineState;
+  // One output may go to standard output (-); the summary then goes to standard error.
+  const int toStdout = isStdoutPath(tracePath) + isStdoutPath(statePath) + isStdoutPath(outputPath) +
+                       isStdoutPath(outs.report);
+  if (toStdout > 1)
+    throw std::runtime_error("only one of --trace, --state, --output and --report can be - (standard output)");
   Session session(makeSetup(o));
   session.streamMainProgram(o.stream);
   loadPrograms(session, o);
-  // The report inlines the stock pictures: without --stock-out they are made in a
-  // temporary folder that is removed afterwards.
-  std::string stockDir = outs.stockOut;
+  // --stock-out is written as a set: into a temporary folder beside it, put in place after
+  // the run (output_folder.hpp). The report inlines the stock pictures: without --stock-out
+  // they are made in a private temporary folder that is removed afterwards.
+  std::string stockDir;
+  std::optional<OutputFolder> stockSet;
   bool tempStock = false;
-  if (stockDir.empty() && !outs.report.empty() && session.setup().stock.present) {
-    stockDir = (std::filesystem::temp_directory_path() /
-                fmt::format("ncvm-report-{}-{}", ::getpid(), std::hash<std::thread::id>{}(std::this_thread::get_id())))
-                   .string();
+  if (!outs.stockOut.empty()) {
+    stockSet.emplace(outs.stockOut);
+    stockDir = stockSet->temporary();
+  } else if (!outs.report.empty() && session.setup().stock.present) {
+    std::string pattern = (std::filesystem::temp_directory_path() / "ncvm-report-XXXXXX").string();
+    if (!::mkdtemp(pattern.data()))
+      throw std::runtime_error(fmt::format("cannot create a temporary folder: {}", std::strerror(errno)));
+    stockDir = pattern;
     tempStock = true;
   }
   if (!stockDir.empty()) session.simulateStock(stockDir);
@@ -130,29 +165,51 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(), session.setup().limits.maxTraceBytes,
                                           session.setup().reportedAxes());
   }
-  nlohmann::json memory;
-  bool haveMemory = false;
-  if (!machineStatePath.empty() && std::filesystem::exists(machineStatePath)) {
-    std::ifstream in(machineStatePath);
+  // Locked from before the read until after the write: runs sharing it take turns.
+  std::optional<MachineStateFile> machineState;
+  if (!machineStatePath.empty()) machineState.emplace(machineStatePath, outs.lockWait);
+  const nlohmann::json* memory = machineState ? machineState->load(session.setup()) : nullptr;
+  Session::Result r = session.run(trace.get(), memory);
+  // Every output is attempted even when one fails (a full disk): the machine state first,
+  // then the others; each failure is reported with its own file, and the run exits 2.
+  std::vector<std::string> failed;
+  auto attempt = [&failed](auto&& write) {
     try {
-      memory = nlohmann::json::parse(in);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(machineStatePath + ": " + e.what());
+      write();
+    } catch (const std::runtime_error& e) {
+      failed.emplace_back(e.what());
     }
-    haveMemory = true;
-  }
-  Session::Result r = session.run(trace.get(), haveMemory ? &memory : nullptr);
+  };
   // The control keeps its memory whatever way the run ended, alarms included.
-  if (!machineStatePath.empty()) writeFileAtomic(machineStatePath, dumpJson(r.machineState) + "\n");
+  if (machineState) attempt([&] { machineState->save(dumpJson(r.machineState) + "\n"); });
+  machineState.reset();
   if (trace) {
-    trace->flush();
+    attempt([&] {
+      try {
+        trace->flush();
+      } catch (const AlarmError&) {  // a write failed: its reason is writeError()
+      }
+      if (int why = trace->writeError())
+        throw std::runtime_error(fmt::format("{}: cannot write the trace: {}", tracePath, std::strerror(why)));
+      trace.reset();
+      traceFile->commit();
+    });
     trace.reset();
-    traceFile->commit();
+    traceFile.reset();
   }
-  if (!statePath.empty()) writeFileAtomic(statePath, dumpJson(r.state) + "\n");
+  if (stockSet) {
+    attempt([&] {
+      stockSet->commit();
+      stockDir = outs.stockOut;  // the report inlines the pictures from their place
+    });
+  }
+  if (!statePath.empty()) attempt([&] { writeFileAtomic(statePath, dumpJson(r.state) + "\n"); });
   if (!outs.report.empty()) {
     const Program* m = session.main();
-    writeFileAtomic(outs.report, htmlReport(r.state, fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label), stockDir));
+    attempt([&] {
+      const std::string title = fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label);
+      writeFileAtomic(outs.report, htmlReport(r.state, title, stockDir));
+    });
   }
   if (tempStock) std::filesystem::remove_all(stockDir);
   std::string dprnt = !outputPath.empty() ? outputPath : session.setup().dprntPath;
@@ -160,17 +217,17 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     if (dprnt.empty())
       err += "ncvm: warning: DPRNT output discarded (give --output FILE or output.dprnt)\n";
     else
-      writeFileAtomic(dprnt, r.printed);
+      attempt([&] { writeFileAtomic(dprnt, r.printed); });
   }
 
   const Program* main = session.main();
   if (!quiet) {
     fmt::format_to(outAt, "ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
                endReasonName(r.end));
-    std::string cycle = fmt::format("{} (length/feed)", hms(r.stats.time));
+    std::string cycle = fmt::format("{} (length/feed)", clockTime(r.stats.time));
     if (session.setup().timing.dynamic && r.timing)
-      cycle = fmt::format("{} (modelled), {} (length/feed)", hms(r.timing->total().model),
-                          hms(r.stats.time));
+      cycle = fmt::format("{} (modelled), {} (length/feed)", clockTime(r.timing->total().model),
+                          clockTime(r.stats.time));
     fmt::format_to(outAt, "  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {}\n",
                r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength,
                r.stats.rapidLength, r.stats.feedLength, cycle);
@@ -195,11 +252,14 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     if (!outs.report.empty()) fmt::format_to(outAt, "  report: {}\n", outs.report);
     if (!r.printed.empty() && !dprnt.empty()) fmt::format_to(outAt, "  output: {}\n", dprnt);
   }
-  if (r.alarm) {
-    fmt::format_to(outAt, "{}\n", alarmLine(*r.alarm, session.files()));
-    return kExitAlarm;
+  if (r.alarm) fmt::format_to(outAt, "{}\n", alarmLine(*r.alarm, session.files()));
+  if (toStdout) {
+    err += out;
+    out.clear();
   }
-  return kExitOk;
+  for (const auto& f : failed) fmt::format_to(errAt, "ncvm: {}\n", f);
+  if (!failed.empty()) return kExitUsage;
+  return r.alarm ? kExitAlarm : kExitOk;
 }
 
 // Runs two programs on the same setup and prints them side by side. Exit status as for
@@ -404,6 +464,7 @@ int startServer(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  installTempCleanup();
   CLI::App app{"ncvm: a Fanuc-compatible CNC control emulator"};
   app.set_version_flag("--version", "ncvm 0.1.0");
   app.require_subcommand(1);
@@ -414,14 +475,17 @@ int main(int argc, char** argv) {
   unsigned jobs = 0;
   auto* run = app.add_subcommand("run", "run a program and report what the machine does");
   addCommon(run, runOpts);
-  run->add_option("--trace", outs.trace, "write the event trace (JSON Lines)");
-  run->add_option("--state", outs.state, "write the final state (JSON)");
+  run->add_option("--trace", outs.trace, "write the event trace (JSON Lines); - for standard output");
+  run->add_option("--state", outs.state, "write the final state (JSON); - for standard output");
   run->add_option("--output", outs.output, "file for DPRNT/BPRNT output");
   run->add_option("--stock-out", outs.stockOut,
                   "simulate the setup's [stock]: write the final stock, pictures and analysis.json into DIR");
   run->add_option("--report", outs.report, "write a self-contained HTML report (summary, alarms, pictures, deviation)");
   run->add_option("--machine-state", outs.machineState,
                   "persistent memory (#500-#999, offsets, part counters): loaded if it exists, saved after the run");
+  run->add_option("--lock-wait", outs.lockWait,
+                  "seconds to wait while another run holds the --machine-state file (default 60)")
+      ->check(CLI::Range(0.0, 86400.0));
   run->add_flag("-q,--quiet", quiet, "print only alarms");
   run->add_flag("--batch", batch,
                 "run every PROGRAM file as a program of its own, in parallel; --trace, --state and --output "

@@ -39,7 +39,8 @@ inline void addServeOptions(CLI::App* serve, ServeOptions& o) {
       ->capture_default_str();
   serve->add_option("--max-blocks", o.maxBlocks, "most blocks one run may execute")
       ->capture_default_str();
-  serve->add_option("--threads", o.threads, "requests served at once")->capture_default_str();
+  serve->add_option("--threads", o.threads, "runs at once (connections are served beside them)")
+      ->capture_default_str();
   serve
       ->add_option("--max-upload-mb", o.maxUploadMb,
                    "largest program text a page may send (pasted, dropped), MB")

@@ -10,15 +10,12 @@
 
 #include "exec/executor.hpp"
 #include "exec/words.hpp"
+#include "machine/offset_limits.hpp"
 
 namespace ncvm {
 
 namespace {
 constexpr char kAxisLetters[kMaxAxes] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
-// Largest offset value the control accepts (PS0032 beyond): 999.999 mm for tool offsets,
-// 99999.999 mm for work offsets (IS-B).
-constexpr int64_t kMaxToolOffsetNm = 999'999'000;
-constexpr int64_t kMaxWorkOffsetNm = 99'999'999'000;
 }  // namespace
 
 int64_t Executor::offsetNm(double v, bool point, int slot) const {
@@ -92,7 +89,7 @@ void Executor::writeToolOffset(int row, int field, bool wear, int64_t nm, bool a
 
 void Executor::setTip(int row, int tip) {
   if (row < 1 || row >= kToolRows) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("{}", row));
-  if (tip < 0 || tip > 9) throw AlarmError(AlarmId::IllegalOffsetValueInG10, "imaginary tip 0-9");
+  if (tip < 0 || tip > kMaxTipDirection) throw AlarmError(AlarmId::IllegalOffsetValueInG10, "imaginary tip 0-9");
   mem_.tools[static_cast<size_t>(row)].tip = tip;
   eventName_ = fmt::format("T{} tip", row);
   sink().onOffset(OffsetEvent{origin_, "tool", eventName_, -1, static_cast<double>(tip)});

@@ -113,7 +113,8 @@ std::vector<const Program*> ProgramStore::addTooLarge(const std::string& path, u
   return {&programs_.back()};
 }
 
-void ProgramStore::addFolder(const std::string& dir, std::string_view except) {
+void ProgramStore::addFolder(const std::string& dir, std::string_view except,
+                             const std::function<bool(const std::string&)>& accept) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + ": not a folder");
@@ -123,7 +124,8 @@ void ProgramStore::addFolder(const std::string& dir, std::string_view except) {
     if (isProgramFileName(e.path())) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
-  for (const auto& f : files) addFile(f.string());
+  for (const auto& f : files)
+    if (!accept || accept(f.string())) addFile(f.string());
 }
 
 const Program* ProgramStore::byNumber(int32_t number) const {

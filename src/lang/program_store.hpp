@@ -4,6 +4,7 @@
 // name wins; later duplicates are reported as warnings.
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -40,7 +41,10 @@ class ProgramStore {
   std::vector<const Program*> addText(std::string_view text, const std::string& name);
   // Every program file in a folder (not recursive), in name order, but the one named
   // `except` (a file whose text was added already, as the web viewer's editor text).
-  void addFolder(const std::string& dir, std::string_view except = {});
+  // `accept`, when given, decides for each file found (the server confines a folder's
+  // files, symlinks followed, to its roots: server/safe_path.hpp).
+  void addFolder(const std::string& dir, std::string_view except = {},
+                 const std::function<bool(const std::string&)>& accept = {});
 
   const Program* byNumber(int32_t number) const;
   const Program* byName(std::string_view name) const;

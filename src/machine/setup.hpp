@@ -106,7 +106,7 @@ struct Limits {
   double maxTimeSeconds = 360'000.0;  // runaway guard: simulated machine time (100 h)
   uint32_t maxLineLength = 4096;
   uint64_t maxFileBytes = 512ull << 20;
-  uint64_t maxTraceBytes = 8ull << 30;
+  uint64_t maxTraceBytes = 1ull << 30;  // 1 GiB: a runaway trace stops before it fills a disk
   int macroNesting = 5;       // G65/G66/code-call levels (locals #1-#33 levels 1..n)
   int subprogramNesting = 10; // M98 levels
   int totalNesting = 15;      // both together

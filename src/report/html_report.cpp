@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "sim/deviation.hpp"
+#include "report/clock_time.hpp"
 
 namespace ncvm {
 
@@ -99,9 +100,7 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
   row("blocks", num(state.value("blocks", nlohmann::json(0)), 0));
   row("moves", num(state.value("moves", nlohmann::json(0)), 0));
   double t = state.value("cycle_time", 0.0);
-  row("cycle time",
-      fmt::format("{:.2f} s ({}:{:02d}:{:05.2f})", t, static_cast<int>(t / 3600),
-                  static_cast<int>(t / 60) % 60, t - 60.0 * static_cast<int>(t / 60)));
+  row("cycle time", fmt::format("{:.2f} s ({})", t, clockTime(t)));
   if (state.contains("path_length"))
     row("path length", fmt::format("rapid {} / feed {}", num(state["path_length"]["rapid"], 3),
                                    num(state["path_length"]["feed"], 3)));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <cstring>
 
 #include "core/alarm.hpp"
@@ -141,9 +142,11 @@ const std::string& TraceWriter::buffer() const {
 }
 
 void TraceWriter::flush() {
-  if (!out_ || used_ == 0) return;
-  if (std::fwrite(buf_.get(), 1, used_, out_) != used_)
-    throw AlarmError(AlarmId::OutputError, "trace");
+  if (!out_ || used_ == 0 || writeError_) return;
+  if (std::fwrite(buf_.get(), 1, used_, out_) != used_) {
+    writeError_ = errno ? errno : EIO;
+    throw AlarmError(AlarmId::OutputError, fmt::format("trace: {}", std::strerror(writeError_)));
+  }
   written_ += used_;
   used_ = 0;
   // The next lines overwrite the texts the next move could have copied.
@@ -213,7 +216,7 @@ void TraceWriter::checkedLine() {
     // The events the control still sends (the moves the time stage held, the alarm's
     // release of a look-ahead) would only throw again: the trace ends with the alarm.
     full_ = true;
-    throw AlarmError(AlarmId::TraceLimit, "limits.max_trace_bytes");
+    throw AlarmError(AlarmId::TraceLimit, fmt::format("limits.max_trace_bytes = {}", maxBytes_));
   }
 }
 

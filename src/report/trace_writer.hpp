@@ -24,6 +24,8 @@ class TraceWriter final : public EventSink {
   TraceWriter(const TraceWriter&) = delete;
   TraceWriter& operator=(const TraceWriter&) = delete;
   void flush();
+  // The errno of the write that failed (a full disk, a file-size limit), 0 while none did.
+  int writeError() const { return writeError_; }
   // The trace so far (out == nullptr: all of it), copied out of the buffer.
   const std::string& buffer() const;
   uint64_t bytes() const { return written_ + used_; }
@@ -106,6 +108,7 @@ class TraceWriter final : public EventSink {
   mutable std::string text_;  // buffer()'s copy
   std::string ev_;            // the line of an event other than a move
   uint64_t written_ = 0;
+  int writeError_ = 0;
   bool full_ = false;  // the limit was passed (and thrown once)
   std::vector<std::string> escapedNames_;
   std::string lastProgram_, lastProgramEscaped_;  // programName(): the last one escaped

@@ -1,6 +1,7 @@
 #include "server/request_checks.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <filesystem>
 
 #include "server/safe_path.hpp"
@@ -54,14 +55,30 @@ std::string hostPart(const std::string& h) {
   return colon == std::string::npos ? h : h.substr(0, colon);
 }
 
-std::optional<std::string> foreignHostOrOrigin(const std::string& host,
-                                               const std::string& originHeader) {
-  std::string origin = originHeader;
-  if (origin.rfind("http://", 0) == 0) origin = origin.substr(7);
+std::optional<std::string> foreignHostOrOrigin(const std::string& host, const std::string& origin,
+                                               int ownPort) {
   if (!host.empty() && !isLoopback(hostPart(host)))
     return "this server answers only to loopback host names";
-  if (!origin.empty() && !isLoopback(hostPart(origin))) return "cross-origin requests are refused";
+  if (origin.empty()) return std::nullopt;
+  constexpr std::string_view kScheme = "http://";
+  if (origin.rfind(kScheme, 0) != 0) return "cross-origin requests are refused";
+  const std::string hostPort = origin.substr(kScheme.size());
+  if (!isLoopback(hostPart(hostPort)) || portPart(hostPort) != ownPort)
+    return "cross-origin requests are refused (only this server's own pages may call it)";
   return std::nullopt;
+}
+
+int portPart(const std::string& h) {
+  const size_t close = !h.empty() && h.front() == '[' ? h.find(']') : 0;
+  if (close == std::string::npos) return -1;
+  const size_t colon = h.find(':', close);
+  if (colon == std::string::npos) return 80;  // the default port of http://
+  int port = 0;
+  const char* first = h.data() + colon + 1;
+  auto [end, ec] = std::from_chars(first, h.data() + h.size(), port);
+  if (ec != std::errc() || end != h.data() + h.size() || first == end || port <= 0 || port > 65535)
+    return -1;
+  return port;
 }
 
 std::string baseName(const std::string& s) {
@@ -130,6 +147,11 @@ RunRequest runRequestFromBody(const std::string& body, const ServerConfig& cf) {
     auto folder = cf.catalog.folder(in["root"].get<std::string>(), dir);
     if (!folder) return refuse(400, "bad folder: not inside the server's folders");
     job["libs"].push_back(folder->string());
+    // The worker confines the folder's programs to their root and names them by it.
+    const Root* root = cf.catalog.find(in["root"].get<std::string>());
+    std::error_code ec;
+    job["roots"] = nlohmann::json::array(
+        {{{"name", root->name}, {"path", std::filesystem::canonical(root->path, ec).string()}}});
   }
   return r;
 }

@@ -17,10 +17,16 @@ bool isLoopback(const std::string& host);
 
 // "localhost:8765", "127.0.0.1", "[::1]:8765" -> the host part.
 std::string hostPart(const std::string& hostHeader);
+// -> the port: 8765, 80 without one, -1 when it is not a port number.
+int portPart(const std::string& hostHeader);
 
 // Why a request with these Host and Origin headers is refused (the 403 text), or nullopt.
 // Empty headers pass (a client that sends none is not a browser driven from elsewhere).
-std::optional<std::string> foreignHostOrOrigin(const std::string& host, const std::string& origin);
+// The only trusted origin is the server's own: http://, a loopback name and the server's
+// port (`ownPort`). Another local port (a development server on :3000, any page served on
+// this machine) is another origin, and a page there must not drive the server.
+std::optional<std::string> foreignHostOrOrigin(const std::string& host, const std::string& origin,
+                                               int ownPort);
 
 // The file name a client gave, reduced to its last component (it names the program in
 // alarms and the trace; it never opens a file).

@@ -68,6 +68,58 @@ nlohmann::json failure(const std::string& message) {
   return {{"ok", false}, {"error", message}};
 }
 
+// A folder of the server's machine and how answers name it.
+struct NamedFolder {
+  std::filesystem::path path;  // canonical
+  std::string name;
+};
+
+std::vector<NamedFolder> namedFolders(const nlohmann::json& request) {
+  std::vector<NamedFolder> out;
+  if (!request.is_object()) return out;
+  std::error_code ec;
+  auto it = request.find("roots");
+  if (it != request.end() && it->is_array())
+    for (const auto& r : *it)
+      if (r.is_object() && r.value("path", "") != "" && r.value("name", "") != "")
+        if (auto p = std::filesystem::canonical(r["path"].get<std::string>(), ec); !ec)
+          out.push_back({p, r["name"].get<std::string>()});
+  if (std::string macros = bundledMacrosFolder(); !macros.empty())
+    if (auto p = std::filesystem::canonical(macros, ec); !ec) out.push_back({p, "macros"});
+  return out;
+}
+
+// `text` with every server folder replaced by its name (file names, error messages).
+std::string withFolderNames(std::string text, const std::vector<NamedFolder>& folders) {
+  for (const auto& f : folders) {
+    const std::string abs = f.path.string();
+    for (size_t at = text.find(abs); at != std::string::npos;
+         at = text.find(abs, at + f.name.size()))
+      text.replace(at, abs.size(), f.name);
+  }
+  return text;
+}
+
+// Every string of an answer (file names in the state, the trace's text, the checks, the
+// warnings) with the server's folders named.
+void renameFolders(nlohmann::json& j, const std::vector<NamedFolder>& folders) {
+  if (j.is_string())
+    j = withFolderNames(j.get<std::string>(), folders);
+  else if (j.is_structured())
+    for (auto& v : j) renameFolders(v, folders);
+}
+
+// The programs of a lib folder, only those inside its root (symlinks followed), but the
+// file named `except` (the program's own file: the text sent is that file).
+void addConfinedLibrary(Session& session, const std::string& dir, std::string_view except,
+                        const std::vector<NamedFolder>& roots) {
+  std::filesystem::path confine = dir;
+  for (const auto& r : roots)
+    if (r.name != "macros" && isInside(r.path, dir)) confine = r.path;
+  session.store().addFolder(
+      dir, except, [&confine](const std::string& file) { return isInside(confine, file); });
+}
+
 // A session ready to run the request's program, or a failure message.
 struct Prepared {
   std::unique_ptr<Session> session;
@@ -105,7 +157,7 @@ std::optional<std::string> programText(const nlohmann::json& request, const RunC
   return text;
 }
 
-Prepared prepare(const nlohmann::json& request) {
+Prepared prepare(const nlohmann::json& request, const std::vector<NamedFolder>& folders) {
   Prepared p;
   if (!request.is_object()) {
     p.error = "the request needs \"program\": the program text";
@@ -146,7 +198,7 @@ Prepared prepare(const nlohmann::json& request) {
     for (const auto& dir : request["libs"])
       // The program's own file is in its folder: the text sent is that file (edited or
       // not), not a second copy of its programs.
-      if (dir.is_string()) session.addLibrary(dir.get<std::string>(), p.name);
+      if (dir.is_string()) addConfinedLibrary(session, dir.get<std::string>(), p.name, folders);
   session.addBundledMacros();
 
   // A setup with [stock] gets its stock simulated, as `ncvm run --stock-out` would, but
@@ -183,8 +235,9 @@ std::string tooLarge(uint64_t bytes, uint64_t limit) {
 }
 
 nlohmann::json runJob(const nlohmann::json& request) {
+  const std::vector<NamedFolder> folders = namedFolders(request);
   try {
-    Prepared p = prepare(request);
+    Prepared p = prepare(request, folders);
     if (!p.session) return failure(p.error);
     Session& session = *p.session;
     StepRecorder recorder(session.files(), session.setup(), session.setup().limits.maxTraceBytes);
@@ -196,23 +249,26 @@ nlohmann::json runJob(const nlohmann::json& request) {
     finalParts(out, session, r, p.name);
     out["trace"] = recorder.trace();
     out["steps"] = std::move(recorder.steps());
+    renameFolders(out, folders);
     return out;
   } catch (const SetupError& e) {
-    return failure(std::string("setup error: ") + e.what());
+    return failure(withFolderNames(std::string("setup error: ") + e.what(), folders));
   } catch (const std::exception& e) {
-    return failure(e.what());
+    return failure(withFolderNames(e.what(), folders));
   }
 }
 
 void runViewerJob(const nlohmann::json& request, const std::function<void(std::string_view)>& out) {
   std::unique_ptr<ViewerStream> stream;
-  auto fail = [&](const std::string& message) {
+  const std::vector<NamedFolder> folders = namedFolders(request);
+  auto fail = [&](const std::string& raw) {
+    const std::string message = withFolderNames(raw, folders);
     // Whatever was streamed stays valid: the end frame says why it stopped.
     out(frame(FrameKind::End,
               failure(message).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
   };
   try {
-    Prepared p = prepare(request);
+    Prepared p = prepare(request, folders);
     if (!p.session) return fail(p.error);
     Session& session = *p.session;
     stream = std::make_unique<ViewerStream>(session.files(), session.setup(),
@@ -222,6 +278,7 @@ void runViewerJob(const nlohmann::json& request, const std::function<void(std::s
     stream->attach(nullptr);
     nlohmann::json tail;
     finalParts(tail, session, r, p.name);
+    renameFolders(tail, folders);
     stream->finish(std::move(tail));
   } catch (const SetupError& e) {
     fail(std::string("setup error: ") + e.what());

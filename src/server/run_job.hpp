@@ -21,10 +21,14 @@ struct RunCaps {
 
 // The request (built by the server, never taken from a client as is):
 //   {"program": TEXT, "name": FILE NAME, "setup": TOML TEXT or null, "setup_name": NAME,
-//    "libs": [FOLDER...], "setup_dir": FOLDER (the server's own --setup), "caps":
+//    "libs": [FOLDER...], "roots": [{"name", "path"}] (the roots the libs lie in),
+//    "setup_dir": FOLDER (the server's own --setup), "caps":
 //    {"max_program_bytes", "max_blocks", "max_sim_seconds", "max_trace_bytes"}}
 // Files named by the setup are read only inside "setup_dir", when given, else the "libs"
-// folders (relative to them).
+// folders (relative to them). The programs of a lib folder (M98/G65 calls) are loaded only
+// when they lie, every symlink followed, inside its root (the folder itself without
+// "roots"), as /api/file reads them; the answer names them ROOT/PATH and the bundled macros
+// macros/NAME, never by a path of the server's machine.
 // The answer: {"ok": true, "state", "trace" (JSON Lines text), "steps", "check", "printed",
 // "machine": {"kind", "axes"}, "stock" (with a [stock] in the setup: the final stock,
 // docs/web-viewer.md)} or {"ok": false, "error": MESSAGE} for a setup or load error.

@@ -20,6 +20,24 @@ bool isPlainRelative(std::string_view relative) {
   return true;
 }
 
+namespace {
+// Both canonical: the components of `base` begin those of `full`.
+bool startsWith(const fs::path& full, const fs::path& base) {
+  auto b = base.begin(), f = full.begin();
+  for (; b != base.end(); ++b, ++f)
+    if (f == full.end() || *f != *b) return false;
+  return true;
+}
+}  // namespace
+
+bool isInside(const fs::path& root, const fs::path& path) {
+  std::error_code ec;
+  fs::path base = fs::canonical(root, ec);
+  if (ec) return false;
+  fs::path full = fs::canonical(path, ec);
+  return !ec && startsWith(full, base);
+}
+
 std::optional<fs::path> resolveInside(const fs::path& root, std::string_view relative) {
   if (!isPlainRelative(relative)) return std::nullopt;
   std::error_code ec;
@@ -27,10 +45,7 @@ std::optional<fs::path> resolveInside(const fs::path& root, std::string_view rel
   if (ec) return std::nullopt;
   // canonical() follows every symlink, so the prefix test below sees where the file really is.
   fs::path full = fs::canonical(base / fs::path(std::string(relative)), ec);
-  if (ec) return std::nullopt;
-  auto b = base.begin(), f = full.begin();
-  for (; b != base.end(); ++b, ++f)
-    if (f == full.end() || *f != *b) return std::nullopt;
+  if (ec || !startsWith(full, base)) return std::nullopt;
   return full;
 }
 

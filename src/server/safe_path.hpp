@@ -14,6 +14,9 @@ namespace ncvm::server {
 std::optional<std::filesystem::path> resolveInside(const std::filesystem::path& root,
                                                    std::string_view relative);
 
+// True when `path`, every symlink followed, is `root` or inside it (both must exist).
+bool isInside(const std::filesystem::path& root, const std::filesystem::path& path);
+
 // True when `relative` is a plain relative path (no `..`, not absolute, no NUL or `\`).
 bool isPlainRelative(std::string_view relative);
 

@@ -2,11 +2,16 @@
 
 #include <httplib.h>
 
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
+#include "server/guarded_http.hpp"
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
 #include "server/viewer_stream.hpp"
@@ -65,16 +70,47 @@ class FrameSplitter {
 
 }  // namespace
 
+// At most `limit` runs at once; a request waits for a free slot at most `wait`.
+class RunSlots {
+ public:
+  explicit RunSlots(int limit) : free_(std::max(1, limit)) {}
+  bool acquire(std::chrono::milliseconds wait) {
+    std::unique_lock lock(mutex_);
+    if (!freed_.wait_for(lock, wait, [this] { return free_ > 0; })) return false;
+    --free_;
+    return true;
+  }
+  void release() {
+    {
+      std::lock_guard lock(mutex_);
+      ++free_;
+    }
+    freed_.notify_one();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable freed_;
+  int free_;
+};
+
 struct WebServer::Impl {
-  httplib::Server http;
+  Impl(int runs, ConnectionLimits limits) : http(limits), slots(runs) {}
+  GuardedHttpServer http;
+  RunSlots slots;
 };
 
 WebServer::WebServer(ServerConfig config)
-    : config_(std::move(config)), impl_(std::make_unique<Impl>()) {
+    : config_(std::move(config)),
+      impl_(std::make_unique<Impl>(config_.threads, config_.connection)) {
   httplib::Server& s = impl_->http;
   const ServerConfig& c = config_;
-  int threads = c.threads > 0 ? c.threads : 1;
-  s.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  // Connection threads are cheap and many; the runs (worker processes) are bounded by
+  // RunSlots. Before, one pool bounded both, so 8 slow connections held every thread.
+  const int connections = std::max(c.connections, std::max(c.threads, 1));
+  s.new_task_queue = [connections] {
+    return new httplib::ThreadPool(static_cast<size_t>(connections));
+  };
   s.set_payload_max_length(c.maxBodyBytes);
   // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, which lets a second server
   // listen on the same port and silently take half of the connections.
@@ -82,32 +118,33 @@ WebServer::WebServer(ServerConfig config)
     int yes = 1;
     ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   });
-  s.set_read_timeout(10, 0);
-  s.set_write_timeout(30, 0);
+  // Read and idle timeouts, the request deadline and the bounds per connection and client
+  // are GuardedHttpServer's (c.connection).
 
   const bool loopbackOnly = isLoopback(c.bind);
-  s.set_pre_routing_handler([loopbackOnly](const httplib::Request& req, httplib::Response& res) {
-    if (loopbackOnly)
-      if (auto refusal =
-              foreignHostOrOrigin(req.get_header_value("Host"), req.get_header_value("Origin"))) {
-        sendError(res, 403, *refusal);
-        return httplib::Server::HandlerResponse::Handled;
-      }
-    // Compression: none on loopback, where it costs far more than it saves (brotli took 48-61
-    // s for an 18 MB answer); gzip at most elsewhere. cpp-httplib picks the encoding from the
-    // request's Accept-Encoding when it writes the answer, so that header is what is changed
-    // (the request object is the server's own, handed over as const).
-    auto& headers = const_cast<httplib::Request&>(req).headers;
-    auto accept = headers.find("Accept-Encoding");
-    if (accept != headers.end()) {
-      bool gzip = !loopbackOnly && accept->second.find("gzip") != std::string::npos;
-      headers.erase("Accept-Encoding");
-      if (gzip) headers.emplace("Accept-Encoding", "gzip");
-    }
-    res.set_header("X-Content-Type-Options", "nosniff");
-    res.set_header("Cache-Control", "no-store");
-    return httplib::Server::HandlerResponse::Unhandled;
-  });
+  s.set_pre_routing_handler(
+      [this, loopbackOnly](const httplib::Request& req, httplib::Response& res) {
+        if (loopbackOnly)
+          if (auto refusal = foreignHostOrOrigin(req.get_header_value("Host"),
+                                                 req.get_header_value("Origin"), config_.port)) {
+            sendError(res, 403, *refusal);
+            return httplib::Server::HandlerResponse::Handled;
+          }
+        // Compression: none on loopback, where it costs far more than it saves (brotli took
+        // 48-61 s for an 18 MB answer); gzip at most elsewhere. cpp-httplib picks the encoding
+        // from the request's Accept-Encoding when it writes the answer, so that header is what
+        // is changed (the request object is the server's own, handed over as const).
+        auto& headers = const_cast<httplib::Request&>(req).headers;
+        auto accept = headers.find("Accept-Encoding");
+        if (accept != headers.end()) {
+          bool gzip = !loopbackOnly && accept->second.find("gzip") != std::string::npos;
+          headers.erase("Accept-Encoding");
+          if (gzip) headers.emplace("Accept-Encoding", "gzip");
+        }
+        res.set_header("X-Content-Type-Options", "nosniff");
+        res.set_header("Cache-Control", "no-store");
+        return httplib::Server::HandlerResponse::Unhandled;
+      });
 
   // cpp-httplib refuses a body over its payload limit before any handler: say which limit.
   s.set_error_handler([this](const httplib::Request& req, httplib::Response& res) {
@@ -159,9 +196,18 @@ WebServer::WebServer(ServerConfig config)
     RunRequest run = runRequestFromBody(req.body, cf);
     if (run.status != 200) return sendError(res, run.status, run.error);
     const nlohmann::json& job = run.job;
-    WorkerResult w =
-        runWorker(cf.workerExe, job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
-                  cf.worker);
+    if (!impl_->slots.acquire(cf.worker.timeout))
+      return sendError(res, 503,
+                       "busy: " + std::to_string(cf.threads) + " runs in progress; try again");
+    WorkerResult w;
+    try {
+      w = runWorker(cf.workerExe,
+                    job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), cf.worker);
+    } catch (...) {
+      impl_->slots.release();
+      throw;
+    }
+    impl_->slots.release();
     switch (w.status) {
       case WorkerResult::Status::Ok:
         break;
@@ -187,6 +233,11 @@ WebServer::WebServer(ServerConfig config)
     run.job["format"] = "binary";
     auto job = std::make_shared<std::string>(
         run.job.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+    // The same bound on runs at once as /api/run; the slot is given back when the answer
+    // has been streamed (or the connection dropped).
+    if (!impl_->slots.acquire(config_.worker.timeout))
+      return sendError(res, 503,
+                       "busy: " + std::to_string(config_.threads) + " runs in progress; try again");
     res.status = 200;
     res.set_chunked_content_provider(
         "application/octet-stream", [this, job](size_t, httplib::DataSink& sink) {
@@ -215,7 +266,8 @@ WebServer::WebServer(ServerConfig config)
           }
           sink.done();
           return true;
-        });
+        },
+        [this](bool) { impl_->slots.release(); });
   });
 
   s.Get("/api/.*", [](const httplib::Request&, httplib::Response& res) {
@@ -259,15 +311,15 @@ WebServer::~WebServer() {
 }
 
 int WebServer::bind() {
-  httplib::Server& s = impl_->http;
+  GuardedHttpServer& s = impl_->http;
   if (config_.port == 0) {
     int port = s.bind_to_any_port(config_.bind);
     if (port <= 0) throw std::runtime_error("cannot bind to " + config_.bind);
     config_.port = port;
-    return port;
-  }
-  if (!s.bind_to_port(config_.bind, config_.port))
+  } else if (!s.bind_to_port(config_.bind, config_.port)) {
     throw std::runtime_error("cannot bind to " + config_.bind + ":" + std::to_string(config_.port));
+  }
+  s.widenBacklog(std::max(128, config_.connections));
   return config_.port;
 }
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "server/connection_limits.hpp"
 #include "server/file_catalog.hpp"
 #include "server/run_job.hpp"
 #include "server/worker.hpp"
@@ -29,7 +30,11 @@ struct ServerConfig {
   uint64_t maxUploadBytes = 64u << 20;   // a program's text in a request (pasted, dropped)
   uint64_t maxBodyBytes = 129u << 20;    // a request: the text JSON-escaped, and its setup
   uint64_t maxAnswerBytes = 2ull << 30;  // the binary run answer (/api/run.bin)
-  int threads = 8;                       // concurrent requests (and so concurrent runs)
+  int threads = 8;                       // concurrent runs (worker processes)
+  // Connections served at once. Far more than the runs: an idle or slow connection holds a
+  // connection thread, never a run, so 50 idle and 8 slow ones leave room for the page.
+  int connections = 128;
+  ConnectionLimits connection;  // timeouts and bounds per connection and per client
 };
 
 class WebServer {

@@ -123,13 +123,16 @@ std::string_view line(std::string_view& rest) {
 
 void checkHeaders(std::string_view host, std::string_view origin) {
   using namespace ncvm::server;
-  auto refusal = foreignHostOrOrigin(std::string(host), std::string(origin));
+  constexpr int kPort = 8765;
+  auto refusal = foreignHostOrOrigin(std::string(host), std::string(origin), kPort);
   if (refusal) return;
   if (!host.empty() && !meansThisMachine(hostPart(std::string(host))))
     fail("a foreign Host passed", host);
   std::string o(origin);
-  if (o.rfind("http://", 0) == 0) o = o.substr(7);
+  if (!o.empty() && o.rfind("http://", 0) != 0) fail("an Origin of another scheme passed", origin);
+  if (!o.empty()) o = o.substr(7);
   if (!o.empty() && !meansThisMachine(hostPart(o))) fail("a foreign Origin passed", origin);
+  if (!o.empty() && portPart(o) != kPort) fail("an Origin of another port passed", origin);
 }
 
 void checkPath(const Fixture& fx, std::string_view path) {

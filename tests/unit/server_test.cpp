@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -79,14 +81,26 @@ TEST(SafePath, RefusesEverythingOutsideTheRoot) {
 TEST(RequestChecks, LoopbackNamesOnly) {
   for (const char* host : {"localhost", "localhost:8765", "127.0.0.1", "127.0.0.1:8765",
                            "127.1.2.3:80", "[::1]:8765", "[::1]"})
-    EXPECT_FALSE(foreignHostOrOrigin(host, "")) << host;
+    EXPECT_FALSE(foreignHostOrOrigin(host, "", 8765)) << host;
   for (const char* host : {"127.evil.example", "127.0.0.1.evil.example:8765", "127.0.0.1.",
                            "127.0.0.256", "127.0.0", "127..0.1", "1127.0.0.1", "128.0.0.1",
                            "evil.example", "localhost.evil.example", "[::2]", "0127.0.0.1:1"})
-    EXPECT_TRUE(foreignHostOrOrigin(host, "")) << host;
-  EXPECT_FALSE(foreignHostOrOrigin("127.0.0.1:8765", "http://localhost:8765"));
-  EXPECT_TRUE(foreignHostOrOrigin("127.0.0.1:8765", "http://127.0.0.1.evil.example:8765"));
-  EXPECT_TRUE(foreignHostOrOrigin("127.0.0.1:8765", "http://127.evil.example"));
+    EXPECT_TRUE(foreignHostOrOrigin(host, "", 8765)) << host;
+  EXPECT_FALSE(foreignHostOrOrigin("127.0.0.1:8765", "http://localhost:8765", 8765));
+  EXPECT_TRUE(foreignHostOrOrigin("127.0.0.1:8765", "http://127.0.0.1.evil.example:8765", 8765));
+  EXPECT_TRUE(foreignHostOrOrigin("127.0.0.1:8765", "http://127.evil.example", 8765));
+}
+
+// Issue 26 item 9: any local port passed as an origin, so a page of another local server (a
+// development server on :3000) could drive this one. Only the server's own origin passes.
+TEST(RequestChecks, OnlyTheServersOwnOrigin) {
+  EXPECT_FALSE(foreignHostOrOrigin("localhost:8765", "http://localhost:8765", 8765));
+  EXPECT_FALSE(foreignHostOrOrigin("[::1]:8765", "http://[::1]:8765", 8765));
+  EXPECT_FALSE(foreignHostOrOrigin("localhost", "http://localhost", 80));
+  for (const char* origin : {"http://localhost:3000", "http://127.0.0.1:8766", "http://localhost",
+                             "https://localhost:8765", "http://localhost:8765x",
+                             "http://localhost:", "null", "file://", "http://[::1]:3000"})
+    EXPECT_TRUE(foreignHostOrOrigin("localhost:8765", origin, 8765)) << origin;
 }
 
 // Found while writing fuzz_server: a request's setup could name any file of the machine as
@@ -206,6 +220,9 @@ class ServerTest : public ::testing::Test {
     c.caps.maxBlocks = 1'000'000'000;  // so that only the wall clock stops the runaway
     c.worker.timeout = std::chrono::milliseconds(1500);
     c.threads = 8;
+    // Shorter than the defaults (10 s, 5 s) so that the tests see them act.
+    c.connection.requestSeconds = 3;
+    c.connection.firstRequestSeconds = 2;
     server = std::make_unique<WebServer>(std::move(c));
     port = server->bind();
     thread = std::thread([this] { server->listen(); });
@@ -223,6 +240,19 @@ class ServerTest : public ::testing::Test {
     return client().Post("/api/run", body, "application/json");
   }
   // What the server answers to raw bytes, or "" when it just closes.
+  // A connected socket to the server, or -1.
+  int connectRaw() {
+    int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(static_cast<uint16_t>(port));
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    if (::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+      ::close(fd);
+      return -1;
+    }
+    return fd;
+  }
   std::string raw(const std::string& bytes) {
     int fd = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in a{};
@@ -309,6 +339,117 @@ TEST_F(ServerTest, RunsWithTheProgramsFolderAsLibrary) {
   EXPECT_EQ(j["state"]["moves"], 2);  // O2000 was found in the folder
 }
 
+// Issue 26 item 7: parts/link.nc, a symlink to a file outside the roots, was loaded as a
+// library program, so M98 P9999 ran it (its text showed in the answer) while /api/file
+// refused it; and answers named files by the server's absolute paths.
+TEST_F(ServerTest, LibraryLookupsStayInsideTheRootsAndAreNamedByThem) {
+  auto r =
+      post(json{{"program", "O1\nM98 P9999\nM30\n"}, {"root", "root"}, {"dir", "parts"}}.dump());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->body.find("SECRET"), std::string::npos) << r->body.substr(0, 400);
+  json j = json::parse(r->body);
+  EXPECT_EQ(j["state"]["end"], "alarm") << r->body.substr(0, 400);
+  EXPECT_EQ(j["state"]["alarm"]["code"], "PS0076");  // program not found
+
+  auto f = client().Get("/api/file?root=root&path=parts/p1.nc");
+  r = post(json{{"program", json::parse(f->body)["text"]},
+                {"name", "p1.nc"},
+                {"root", "root"},
+                {"dir", "parts"}}
+               .dump());
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const std::string rootPath = fs::canonical(root.path).string(),
+                    outsidePath = fs::canonical(outside.path).string();
+  EXPECT_EQ(r->body.find(rootPath), std::string::npos) << "an absolute server path in the answer";
+  EXPECT_EQ(r->body.find(outsidePath), std::string::npos);
+  EXPECT_NE(r->body.find("root/parts/O2000.nc"), std::string::npos)
+      << "O2000's lines named by their root";
+  // A load error names the folder by its root too.
+  r = post(json{{"program", "O1\nM98 P2000\nM30\n"},
+                {"root", "root"},
+                {"dir", "parts"},
+                {"setup", "[target]\npolyline = \"nope.csv\"\n"}}
+               .dump());
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->body.find(rootPath), std::string::npos) << r->body;
+}
+
+// Issue 26 item 8: 8 connections sending a byte at a time (as many as the server had
+// threads) blocked every request, and 50 idle connections delayed one by 28 s. Idle and slow
+// connections now hold connection threads only, are closed when idle, and the runs have
+// slots of their own.
+TEST_F(ServerTest, AnswersWithinASecondDuringSlowAndIdleConnections) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<int> idle;
+  for (int k = 0; k < 50; ++k) idle.push_back(connectRaw());
+  const auto idleSince = Clock::now();
+  std::vector<std::thread> slow;
+  std::vector<long long> slowLasted(8, 0);  // ms until the server cut the connection
+  for (int client = 0; client < 8; ++client)
+    slow.emplace_back([&, client] {
+      const auto start = Clock::now();
+      int fd = connectRaw();
+      const std::string head = "GET /api/info HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: ";
+      // One byte every 100 ms, never finishing the header; at most 15 s.
+      for (size_t k = 0; k < 150; ++k) {
+        char c = k < head.size() ? head[k] : 'a';
+        if (::send(fd, &c, 1, MSG_NOSIGNAL) != 1) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+      slowLasted[static_cast<size_t>(client)] =
+          std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+      ::close(fd);
+    });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const auto start = Clock::now();
+    auto r = client().Get("/api/info");
+    const auto ms =
+        std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_LT(ms, 1000) << "request " << attempt << " during the attack";
+  }
+  auto run = post(json{{"program", "O1\nG0X1.\nM30\n"}}.dump());
+  ASSERT_TRUE(run);
+  EXPECT_EQ(run->status, 200);
+  // The idle connections are closed by the server (2 s without a request here).
+  for (int fd : idle) {
+    timeval tv{5, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  }
+  char byte;
+  EXPECT_EQ(::recv(idle.front(), &byte, 1, 0), 0) << "an idle connection stayed open";
+  EXPECT_LT(std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - idleSince).count(),
+            4000);
+  // A request that does not arrive whole within its deadline (3 s here) is cut off.
+  for (auto& t : slow) t.join();
+  for (long long ms : slowLasted) EXPECT_LT(ms, 6000) << "a slow request was not cut off";
+  for (int fd : idle) ::close(fd);
+}
+
+// One client (one remote address) holds at most 64 connections: the others are closed at
+// once instead of taking threads.
+TEST_F(ServerTest, OneClientsConnectionsAreBounded) {
+  std::vector<int> fds;
+  for (int k = 0; k < 80; ++k) fds.push_back(connectRaw());
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  int closed = 0;
+  for (int fd : fds) {
+    pollfd p{fd, POLLIN, 0};
+    char byte;
+    if (::poll(&p, 1, 0) > 0 && ::recv(fd, &byte, 1, MSG_DONTWAIT) == 0) ++closed;
+  }
+  EXPECT_EQ(closed, 80 - 64);
+  for (int fd : fds) ::close(fd);
+  // Once they are gone, the client is served again.
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  auto r = client().Get("/api/info");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+}
+
 TEST_F(ServerTest, MalformedAndOversizedRequests) {
   auto r = post("{not json");
   ASSERT_TRUE(r);
@@ -360,6 +501,14 @@ TEST_F(ServerTest, RefusesForeignHostAndOrigin) {
              "application/json");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 403);
+  // Another local port is another origin; the server's own passes.
+  r = c.Post("/api/run", {{"Origin", "http://localhost:3000"}},
+             json{{"program", "O1\nM30\n"}}.dump(), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 403);
+  r = c.Get("/api/info", {{"Origin", "http://127.0.0.1:" + std::to_string(port)}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
 }
 
 TEST_F(ServerTest, ConcurrentClientsAreIsolated) {
