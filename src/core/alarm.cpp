@@ -43,6 +43,8 @@ const std::vector<AlarmInfo>& alarmTable() {
        "smaller than the cutter radius): the tool would overcut."},
       {AlarmId::ChamferInStartupCancel, "CHF/CNR NOT ALLOWED IN G41,G42",
        "Chamfer or corner rounding (,C ,R) in the block that starts or cancels cutter compensation."},
+      {AlarmId::G45G48InCrc, "G45/G48 NOT ALLOWED IN CRC",
+       "G45-G48 (tool position offset) while cutter compensation is on."},
       {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC", "G27-G30 in canned-cycle mode."},
       {AlarmId::QNotFound, "ADDRESS Q NOT FOUND (G73/G83)", "G73 or G83 without a peck depth Q (or Q0)."},
       {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND", "G30 with P other than 2-4."},

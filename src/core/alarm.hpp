@@ -36,6 +36,7 @@ enum class AlarmId : uint16_t {
   InterferenceInCircular = 38,
   ChamferInStartupCancel = 39,
   InterferenceInCrc = 41,
+  G45G48InCrc = 42,
   G27to30InCycle = 44,
   QNotFound = 45,
   IllegalReferenceReturn = 46,

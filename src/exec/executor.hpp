@@ -393,6 +393,8 @@ class Executor {
 
   // probe.cpp
   void skipMove(const Words& w);
+  // position_offset.cpp: G45-G48 (the one-shot code x10); true when the block moved
+  bool toolPositionOffset(const Words& w, int code10);
 
   // Lathe T code: tool (geometry) number and wear offset number. Four digits Tttoo; two
   // digits T to (tool t, offset o).

@@ -513,6 +513,12 @@ void Executor::execNcGeneral(const Block& b) {
       skipMove(w);
       moved = true;
       break;
+    case 450:
+    case 460:
+    case 470:
+    case 480:
+      moved = toolPositionOffset(w, oneShot);
+      break;
     default: {
       const bool latheThread = lathe_ && (modal_.motion == 320 || modal_.motion == 330);
       if (latheThread) tnrcBeforeCycle(0, w);  // threading moves are not nose-compensated
