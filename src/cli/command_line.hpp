@@ -31,8 +31,7 @@ inline std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv)
 // Prints the error that ended a command and returns its exit status (2).
 inline int commandError(const std::exception& e) {
   if (const auto* s = dynamic_cast<const SetupError*>(&e))
-    fmt::print(stderr, "ncvm: setup error: {}{}\n", s->what(),
-               s->line ? fmt::format(" (line {})", s->line) : "");
+    fmt::print(stderr, "ncvm: setup error: {}\n", setupErrorText(*s));
   else
     fmt::print(stderr, "ncvm: {}\n", e.what());
   return 2;

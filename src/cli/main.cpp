@@ -282,8 +282,7 @@ int batchCommand(const CommonOptions& o, const RunOutputs& dirs, bool quiet, uns
         files.output = in(outputDir, stems[k], ".txt");
         codes[k] = runOne(one, files, quiet, outs[k], errs[k]);
       } catch (const SetupError& e) {
-        errs[k] += fmt::format("ncvm: setup error: {}{}\n", e.what(),
-                               e.line ? fmt::format(" (line {})", e.line) : "");
+        errs[k] += fmt::format("ncvm: setup error: {}\n", setupErrorText(e));
         codes[k] = kExitUsage;
       } catch (const std::exception& e) {
         errs[k] += fmt::format("ncvm: {}: {}\n", o.programs[k], e.what());
