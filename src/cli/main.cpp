@@ -22,6 +22,7 @@
 #include "cli/serve_options.hpp"
 #include "core/alarm.hpp"
 #include "core/program_files.hpp"
+#include "core/version.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
 #include "report/html_report.hpp"
@@ -402,7 +403,7 @@ int startServer(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   CLI::App app{"ncvm: a Fanuc-compatible CNC control emulator"};
-  app.set_version_flag("--version", "ncvm 0.1.0");
+  app.set_version_flag("--version", std::string("ncvm ") + versionText());
   app.require_subcommand(1);
 
   CommonOptions runOpts;

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/version.hpp"
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
 
@@ -80,7 +81,7 @@ WebServer::WebServer(ServerConfig config)
     sendJson(
         res, 200,
         {{"name", "ncvm"},
-         {"version", "0.1.0"},
+         {"version", versionText()},
          {"roots", roots},
          {"caps", capsJson(cf.caps)},
          {"timeout_ms", cf.worker.timeout.count()},
