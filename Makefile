@@ -1,14 +1,29 @@
-# The two set-up commands of the README: `make demo` and `make test`.
-.PHONY: demo serve test test-asan bench build deps format clean
+# The set-up commands of the README: `make demo` and `make test`. Bare `make` lists them.
+.PHONY: help demo serve test test-asan bench build configure deps format clean
+
+help:
+	@echo "make demo       install what is missing, build ncvm, run every bundled example (out/demo/)"
+	@echo "make serve      build, start the web viewer (http://127.0.0.1:8765/)"
+	@echo "make test       build everything with the tests, run them (ctest)"
+	@echo "make test-asan  the same tests under AddressSanitizer + UBSan (clang)"
+	@echo "make bench      build and run the benchmarks (docs/performance.md)"
+	@echo "make build      build everything (Release, build/release)"
+	@echo "make format     clang-format the C++ sources"
+	@echo "make deps       install the Debian packages and the web viewer's npm packages"
+	@echo "make clean      remove build/"
 
 deps:
 	@scripts/install-deps
 
-build: deps
+configure: deps
 	@cmake --preset release >/dev/null
+
+build: configure
 	@cmake --build --preset release
 
-demo: build
+# The demo runs only ncvm: it builds only ncvm (not the tests, benchmarks or the server).
+demo: configure
+	@cmake --build --preset release --target ncvm
 	@scripts/demo
 
 serve: build

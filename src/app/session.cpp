@@ -45,6 +45,7 @@ Session::Session(Setup setup)
     : setup_(std::move(setup)), store_(files_, parseOptionsFor(setup_), setup_.limits.maxFileBytes) {}
 
 void Session::addProgramFile(const std::string& path) {
+  ownFiles_.push_back(path);
   auto progs = store_.addFile(path, !main_ && stream_ ? &*stream_ : nullptr);
   if (!main_ && !progs.empty()) main_ = progs.front();
   ownPrograms_.insert(ownPrograms_.end(), progs.begin(), progs.end());
@@ -113,7 +114,13 @@ nlohmann::json modalJson(const ModalState& m, const Setup& setup) {
 Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState) {
   Result r;
   std::optional<Alarm> late;
-  if (!main_) throw std::runtime_error("no program to run");
+  if (!main_) {
+    std::string names;
+    for (const auto& f : ownFiles_) names += (names.empty() ? "" : ", ") + f;
+    throw std::runtime_error(names.empty()
+                                 ? std::string("no program to run")
+                                 : "no program to run: " + names + " holds no program text");
+  }
   EventSink none;
   for (const auto& [n, v] : setup_.initialVars)
     if (n >= 200 && n <= 499 && !setup_.commonVars200)

@@ -96,6 +96,7 @@ class Session {
   const Program* main_ = nullptr;
   std::optional<ProgramStore::StreamOptions> stream_;
   std::vector<const Program*> ownPrograms_;  // from files named on the command line
+  std::vector<std::string> ownFiles_;        // their names, for "no program to run"
   bool stockOn_ = false;
   std::string stockOut_;
   int viewerGrid_ = 0;  // 0: no Result::viewerStock

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <optional>
 
 #include "machine/setup.hpp"
@@ -31,8 +32,9 @@ inline std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv)
 // Prints the error that ended a command and returns its exit status (2).
 inline int commandError(const std::exception& e) {
   if (const auto* s = dynamic_cast<const SetupError*>(&e))
-    fmt::print(stderr, "ncvm: setup error: {}{}\n", s->what(),
-               s->line ? fmt::format(" (line {})", s->line) : "");
+    fmt::print(stderr, "ncvm: setup error: {}\n", setupErrorText(*s));
+  else if (const auto* f = dynamic_cast<const std::filesystem::filesystem_error*>(&e))
+    fmt::print(stderr, "ncvm: {}: {}\n", f->path1().string(), f->code().message());
   else
     fmt::print(stderr, "ncvm: {}\n", e.what());
   return 2;

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <thread>
 #include <unistd.h>
 
@@ -23,7 +24,9 @@
 #include "cli/command_line.hpp"
 #include "cli/serve_options.hpp"
 #include "core/alarm.hpp"
+#include "core/edit_distance.hpp"
 #include "core/program_files.hpp"
+#include "core/version.hpp"
 #include "exec/gcode_table.hpp"
 #include "report/atomic_file.hpp"
 #include "report/clock_time.hpp"
@@ -111,8 +114,22 @@ std::string dumpJson(const nlohmann::json& j) {
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+// Text from the program (a message, a comment, a file name) for the terminal: control bytes
+// as \xNN, so a program cannot move the cursor or clear the screen of whoever runs it.
+std::string printable(std::string_view text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c < 0x20 || c == 0x7f)
+      out += fmt::format("\\x{:02X}", c);
+    else
+      out += static_cast<char>(c);
+  }
+  return out;
+}
+
 std::string alarmLine(const Alarm& a, const SourceFiles& files) {
-  std::string s = fmt::format("{}:{}:{}: {} {}", files.name(a.loc.file), a.loc.line, a.loc.col, a.code, a.text);
+  std::string s = fmt::format("{}:{}:{}: {} {}", printable(files.name(a.loc.file)), a.loc.line, a.loc.col, a.code,
+                              printable(a.text));
   if (a.n) s += fmt::format(" (N{})", *a.n);
   return s;
 }
@@ -154,6 +171,16 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
       throw std::runtime_error(fmt::format("cannot create a temporary folder: {}", std::strerror(errno)));
     stockDir = pattern;
     tempStock = true;
+  }
+  if (!outs.stockOut.empty()) {
+    // Said here in words: the stock writers would fail later with a raw filesystem error.
+    std::error_code ec;
+    std::filesystem::create_directories(outs.stockOut, ec);
+    if (!ec && !std::filesystem::is_directory(outs.stockOut, ec))
+      ec = std::make_error_code(std::errc::not_a_directory);
+    if (ec)
+      throw std::runtime_error(fmt::format("--stock-out {}: cannot make the folder: {}", outs.stockOut,
+                                           ec == std::errc::not_a_directory ? "a file is in the way" : ec.message()));
   }
   if (!stockDir.empty()) session.simulateStock(stockDir);
   for (const auto& w : session.store().warnings()) fmt::format_to(errAt, "ncvm: warning: {}\n", w);
@@ -342,8 +369,7 @@ int batchCommand(const CommonOptions& o, const RunOutputs& dirs, bool quiet, uns
         files.output = in(outputDir, stems[k], ".txt");
         codes[k] = runOne(one, files, quiet, outs[k], errs[k]);
       } catch (const SetupError& e) {
-        errs[k] += fmt::format("ncvm: setup error: {}{}\n", e.what(),
-                               e.line ? fmt::format(" (line {})", e.line) : "");
+        errs[k] += fmt::format("ncvm: setup error: {}\n", setupErrorText(e));
         codes[k] = kExitUsage;
       } catch (const std::exception& e) {
         errs[k] += fmt::format("ncvm: {}: {}\n", o.programs[k], e.what());
@@ -375,8 +401,8 @@ int checkCommand(const CommonOptions& o, bool json) {
   } else {
     for (const char* kind : {"alarms", "warnings"})
       for (const auto& a : report[kind])
-        fmt::print("{}:{}:{}: {} {}\n", a["file"].get<std::string>(), a["line"].get<int>(), a["col"].get<int>(),
-                   a["code"].get<std::string>(), a["text"].get<std::string>());
+        fmt::print("{}:{}:{}: {} {}\n", printable(a["file"].get<std::string>()), a["line"].get<int>(),
+                   a["col"].get<int>(), a["code"].get<std::string>(), printable(a["text"].get<std::string>()));
     fmt::print("ncvm check: {} alarm(s), {} warning(s)\n", report["alarms"].size(), report["warnings"].size());
   }
   return report["alarms"].empty() ? kExitOk : kExitAlarm;
@@ -461,12 +487,55 @@ int startServer(int argc, char** argv) {
   throw std::runtime_error(fmt::format("cannot start {}: {}", server, std::strerror(errno)));
 }
 
+// `ncvm rnu x.nc`: CLI11 would say "A subcommand is required"; say which word is not a
+// command and the nearest one that is.
+std::optional<int> unknownCommand(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  const std::string_view word = argv[1];
+  std::string best, all;
+  size_t bestDistance = 3;
+  for (const CLI::App* sc : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (sc->get_name() == word) return std::nullopt;
+    if (sc->get_group().empty()) continue;  // internal (serve-worker)
+    all += (all.empty() ? "" : ", ") + sc->get_name();
+    if (size_t d = editDistance(word, sc->get_name()); d < bestDistance) {
+      bestDistance = d;
+      best = sc->get_name();
+    }
+  }
+  fmt::print(stderr, "ncvm: unknown command {}{}\nncvm: the commands are {} (ncvm --help)\n", printable(word),
+             best.empty() ? "" : fmt::format(" (did you mean {}?)", best), all);
+  return kExitUsage;
+}
+
+// --help: FILE, DIR and KEY=VALUE instead of CLI11's TEXT, and the exit codes with an example.
+void describeValues(CLI::App& app) {
+  static const std::set<std::string> files = {"PROGRAM", "A", "B", "--setup", "--trace", "--state",
+                                              "--output", "--report", "--machine-state"};
+  static const std::set<std::string> dirs = {"--lib", "--stock-out", "--out", "--root", "DIR"};
+  static const std::set<std::string> settings = {"--set", "--vary"};
+  for (CLI::App* sc : app.get_subcommands([](CLI::App*) { return true; }))
+    for (CLI::Option* opt : sc->get_options()) {
+      const std::string name = opt->get_name();
+      if (files.count(name)) opt->type_name("FILE");
+      else if (dirs.count(name)) opt->type_name("DIR");
+      else if (settings.count(name)) opt->type_name("KEY=VALUE");
+    }
+  const std::string footer =
+      "\nExit status: 0 the program ended normally (M02/M30 or its end), 3 it ended in an alarm,\n"
+      "2 a usage or setup error (bad option, unreadable file, bad setup).\n\n"
+      "Example:\n  ncvm run examples/macro-basics/bolt-circle.nc --trace t.jsonl --state s.json\n"
+      "  ncvm run prog.nc --setup presets/fanuc-0i-mf.toml --set DPI=1\n";
+  app.footer(footer);
+  for (CLI::App* sc : app.get_subcommands([](CLI::App*) { return true; })) sc->footer(footer);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   installTempCleanup();
   CLI::App app{"ncvm: a Fanuc-compatible CNC control emulator"};
-  app.set_version_flag("--version", "ncvm 0.1.0");
+  app.set_version_flag("--version", std::string("ncvm ") + versionText());
   app.require_subcommand(1);
 
   CommonOptions runOpts;
@@ -548,6 +617,8 @@ int main(int argc, char** argv) {
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
+  describeValues(app);
+  if (const auto status = unknownCommand(app, argc, argv)) return *status;
   if (const auto status = parseCommandLine(app, argc, argv)) return *status;
   try {
     if (run->parsed() && batch) return batchCommand(runOpts, outs, quiet, jobs);

@@ -1,13 +1,18 @@
 #include "machine/setup.hpp"
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <toml++/toml.h>
 #include <variant>
+
+#include "machine/setup_keys.hpp"
 
 namespace ncvm {
 namespace {
@@ -43,10 +48,28 @@ using SettingValue = std::variant<bool, double, std::string, std::vector<double>
 struct Where {
   std::string key;
   int line = 0;
+  int col = 0;
 };
 
 [[noreturn]] void bad(const Where& w, const std::string& why) {
-  throw SetupError(fmt::format("{}: {}", w.key, why), w.key, w.line);
+  std::string text = fmt::format("{}: {}", w.key, why);
+  // A key the setup does not know: the nearest one it does ("did you mean machine.kind?").
+  if ((why.rfind("unknown", 0) == 0 && why.find("key") != std::string::npos) ||
+      why.find(" keys") != std::string::npos || why.find("fields:") != std::string::npos ||
+      why.find("a parameter is a number") != std::string::npos)
+    if (auto near = nearestSetupKey(w.key)) text += fmt::format(" (did you mean {}?)", *near);
+  SetupError e(text, w.key, w.line);
+  e.col = w.col;
+  throw e;
+}
+
+// A setup error located in its file: "FILE:LINE:COL: KEY: WHY".
+[[noreturn]] void inFile(const SetupError& e, const std::string& file, std::string why = {}) {
+  if (why.empty()) why = e.what();
+  SetupError located(fmt::format("{}:{}:{}: {}", file, e.line, e.col, why), e.key, e.line);
+  located.col = e.col;
+  located.file = file;
+  throw located;
 }
 
 double asNumber(const SettingValue& v, const Where& w) {
@@ -82,8 +105,8 @@ void applyControlDefaults(Setup& s) {
 }
 
 // The one place where a setting is interpreted; TOML files and --set both come here.
-void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line) {
-  Where w{key, line};
+void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line, int col = 0) {
+  Where w{key, line, col};
   auto dot = key.find('.');
   std::string head = key.substr(0, dot);
   std::string rest = dot == std::string::npos ? "" : key.substr(dot + 1);
@@ -133,7 +156,11 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line)
     if (auto it = parameterAliases().find(p); it != parameterAliases().end()) p = it->second;
     if (!isParameterNumber(p) && !isAxisParameter(p))
       bad(w, "a parameter is a number like 3401#0 or 3410 (5421.X for one axis), or an alias (DPI, NAT, LRP, ...)");
-    s.parameters[p] = asNumber(v, w);
+    const double value = asNumber(v, w);
+    // A bit parameter (3401#0, DPI) holds 0 or 1, as on the control's parameter screen.
+    if (p.find('#') != std::string::npos && value != 0 && value != 1)
+      bad(w, fmt::format("{} is a bit parameter: 0 or 1 (true or false), not {}", p, value));
+    s.parameters[p] = value;
     return;
   }
   if (head == "block_skip") {
@@ -452,7 +479,10 @@ void walk(Setup& s, const toml::table& t, const std::string& prefix) {
   for (const auto& [k, node] : t) {
     std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     if (prefix.empty() && k.str() == "machine") continue;
-    int line = static_cast<int>(node.source().begin.line);
+    // Errors point at the key (where the value is wrong too, the key names it).
+    const auto& at = k.source().begin.line ? k.source().begin : node.source().begin;
+    int line = static_cast<int>(at.line);
+    int col = static_cast<int>(at.column);
     if (auto* sub = node.as_table()) {
       walk(s, *sub, key);
     } else if (auto* tables = node.as_array(); tables && !tables->empty() && tables->front().is_table()) {
@@ -468,17 +498,38 @@ void walk(Setup& s, const toml::table& t, const std::string& prefix) {
         if (auto d = e.value<double>()) nums.push_back(*d);
         else throw SetupError(key + ": expected an array of numbers", key, line);
       }
-      applyKey(s, key, nums, line);
+      applyKey(s, key, nums, line, col);
     } else if (auto b = node.value<bool>(); node.is_boolean()) {
-      applyKey(s, key, *b, line);
+      applyKey(s, key, *b, line, col);
     } else if (node.is_number()) {
-      applyKey(s, key, *node.value<double>(), line);
+      applyKey(s, key, *node.value<double>(), line, col);
     } else if (auto str = node.value<std::string>()) {
-      applyKey(s, key, *str, line);
+      applyKey(s, key, *str, line, col);
     } else {
       throw SetupError(key + ": unsupported value type", key, line);
     }
   }
+}
+
+// toml++ reads a folder as an empty table: a setup path must be a readable regular file.
+void checkSetupFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  auto refuse = [&](const std::string& why) {
+    SetupError e(fmt::format("{}: {}", path, why), "", 0);
+    e.file = path;
+    throw e;
+  };
+  if (st.type() == fs::file_type::not_found) refuse("no such file");
+  if (ec && ec == std::errc::permission_denied) refuse("permission denied");
+  if (ec) refuse(ec.message());
+  if (st.type() == fs::file_type::directory)
+    refuse("is a folder, not a setup file (give FILE.toml)");
+  if (st.type() != fs::file_type::regular) refuse("not a regular file (a setup is a TOML file)");
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) refuse(errno == EACCES ? "permission denied" : std::strerror(errno));
+  std::fclose(f);
 }
 
 }  // namespace
@@ -552,11 +603,15 @@ Setup parseSetup(std::string_view text, const std::string& name) {
   try {
     t = toml::parse(text, name);
   } catch (const toml::parse_error& e) {
-    throw SetupError(fmt::format("{}:{}:{}: {}", name, e.source().begin.line, e.source().begin.column,
-                                 e.description()),
-                     "", static_cast<int>(e.source().begin.line));
+    SetupError located("", "", static_cast<int>(e.source().begin.line));
+    located.col = static_cast<int>(e.source().begin.column);
+    inFile(located, name, std::string(e.description()));
   }
-  walk(s, t, "");
+  try {
+    walk(s, t, "");
+  } catch (const SetupError& e) {
+    inFile(e, name);
+  }
   return s;
 }
 
@@ -567,15 +622,20 @@ Setup loadSetup(const std::string& path) {
 }
 
 void loadSetupInto(Setup& s, const std::string& path) {
+  checkSetupFile(path);
   toml::table t;
   try {
     t = toml::parse_file(path);
   } catch (const toml::parse_error& e) {
-    throw SetupError(fmt::format("{}:{}:{}: {}", path, e.source().begin.line, e.source().begin.column,
-                                 e.description()),
-                     "", static_cast<int>(e.source().begin.line));
+    SetupError located("", "", static_cast<int>(e.source().begin.line));
+    located.col = static_cast<int>(e.source().begin.column);
+    inFile(located, path, std::string(e.description()));
   }
-  walk(s, t, "");
+  try {
+    walk(s, t, "");
+  } catch (const SetupError& e) {
+    inFile(e, path);
+  }
   // Files named by the setup are found beside it.
   std::filesystem::path dir = std::filesystem::path(path).parent_path();
   for (std::string* f : {&s.target.polyline, &s.target.heightMap})
@@ -611,7 +671,16 @@ void applySetting(Setup& setup, const std::string& assignment) {
   } else if (text == "true" || text == "false") v = text == "true";
   else if (r.ec == std::errc() && r.ptr == text.data() + text.size()) v = d;
   else v = text;
-  applyKey(setup, key, v, 0);
+  try {
+    applyKey(setup, key, v, 0);
+  } catch (const SetupError& e) {
+    throw SetupError("--set " + assignment + ": " + e.what(), e.key);
+  }
+}
+
+std::string setupErrorText(const SetupError& e) {
+  if (!e.file.empty() || e.line == 0) return e.what();
+  return fmt::format("{} (line {})", e.what(), e.line);
 }
 
 const ToolSpec* physicalTool(const Setup& setup, int number) {

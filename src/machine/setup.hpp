@@ -125,7 +125,12 @@ struct SetupError : std::runtime_error {
       : std::runtime_error(what), key(std::move(badKey)), line(atLine) {}
   std::string key;
   int line;
+  int col = 0;
+  std::string file;  // set once the message names FILE:LINE:COL
 };
+
+// The error as ncvm prints it: FILE:LINE:COL: KEY: WHY (the file known), else "WHY (line N)".
+std::string setupErrorText(const SetupError& e);
 
 struct Setup {
   MachineKind kind = MachineKind::Mill;

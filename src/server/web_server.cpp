@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "server/guarded_http.hpp"
+#include "core/version.hpp"
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
 #include "server/viewer_stream.hpp"
@@ -164,7 +165,7 @@ WebServer::WebServer(ServerConfig config)
     sendJson(
         res, 200,
         {{"name", "ncvm"},
-         {"version", "0.1.0"},
+         {"version", versionText()},
          {"roots", roots},
          {"caps", capsJson(cf.caps)},
          {"timeout_ms", cf.worker.timeout.count()},

@@ -1,10 +1,12 @@
+#include "machine/setup.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
-#include "machine/setup.hpp"
+#include "machine/setup_keys.hpp"
 
 using namespace ncvm;
 
@@ -114,4 +116,38 @@ TEST(Setup, TargetFilesAreFoundBesideTheSetup) {
   EXPECT_EQ(s.target.polyline, (std::filesystem::path(dir) / "contour.csv").string());
   EXPECT_TRUE(s.probe.useStock);
   std::remove(path.c_str());
+}
+
+// The names behind "did you mean": each one is a key the setup reads (no suggestion of a
+// key that would then be refused as unknown).
+TEST(SetupKeys, EverySuggestedKeyIsAccepted) {
+  const char* values[] = {"1",      "4",   "true",    "mill",  "0i-F",    "A",
+                          "IS-B",   "mm",  "flat",    "box",   "machine", "sharp",
+                          "simple", "N10", "[0,0,0]", "[0,0]", "x.txt"};
+  for (std::string key : setupKeyNames()) {
+    for (auto p = key.find(".X"); p != std::string::npos; p = key.find(".X"))
+      key.replace(p, 2, ".Y");
+    for (auto p = key.find(".N"); p != std::string::npos; p = key.find(".N"))
+      key.replace(p, 2, ".1");
+    bool accepted = false;
+    std::string last;
+    for (const char* v : values) {
+      ncvm::Setup s = defaultSetup();
+      try {
+        applySetting(s, key + "=" + v);
+        accepted = true;
+        break;
+      } catch (const SetupError& e) {
+        last = e.what();
+      }
+    }
+    EXPECT_TRUE(accepted) << key << ": " << last;
+  }
+}
+
+TEST(SetupKeys, NearestKeyKeepsTheAxisAndNumber) {
+  EXPECT_EQ(nearestSetupKey("machin.kind"), "machine.kind");
+  EXPECT_EQ(nearestSetupKey("axes.Z.rapd"), "axes.Z.rapid");
+  EXPECT_EQ(nearestSetupKey("tool_offsets.52.d_geometri"), "tool_offsets.52.d_geometry");
+  EXPECT_EQ(nearestSetupKey("completely.different"), std::nullopt);
 }
