@@ -13,14 +13,17 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <thread>
 
 #include "app/session.hpp"
 #include "server/request_checks.hpp"
 #include "server/run_job.hpp"
 #include "server/safe_path.hpp"
+#include "server/viewer_stream.hpp"
 #include "server/web_server.hpp"
 #include "sim/heightfield_io.hpp"
 
@@ -666,4 +669,243 @@ TEST(RunJob, NoStockWithoutAStockSection) {
   json r = runJob({{"program", "O1\nG00 X1.\nM30\n"}});
   ASSERT_TRUE(r["ok"].get<bool>());
   EXPECT_FALSE(r.contains("stock"));
+}
+
+// ---- The binary run answer (viewer_stream.hpp, POST /api/run.bin) ----
+
+namespace {
+
+struct Frame {
+  uint32_t kind;
+  std::string payload;
+};
+
+// The frames of a binary answer; a cut frame fails the test.
+std::vector<Frame> framesOf(const std::string& bytes) {
+  std::vector<Frame> out;
+  size_t at = 0;
+  while (at < bytes.size()) {
+    EXPECT_GE(bytes.size() - at, 8u) << "a cut frame header";
+    if (bytes.size() - at < 8) break;
+    uint32_t kind = 0, length = 0;
+    std::memcpy(&kind, bytes.data() + at, 4);
+    std::memcpy(&length, bytes.data() + at + 4, 4);
+    size_t whole = 8 + length + (8 - length % 8) % 8;
+    EXPECT_LE(whole, bytes.size() - at) << "a cut frame";
+    if (whole > bytes.size() - at) break;
+    out.push_back({kind, bytes.substr(at + 8, length)});
+    at += whole;
+  }
+  return out;
+}
+
+// The columns of all events frames, as the page reads them (web/src/wire.js).
+struct Columns {
+  int axes = 3;
+  std::vector<uint8_t> kind, flags;
+  std::vector<uint32_t> line;
+  std::vector<double> end, center, time, dt;
+  size_t ownPositions = 0;
+};
+
+template <class T>
+void take(const std::string& p, size_t& at, size_t count, std::vector<T>* into) {
+  const size_t bytes = count * sizeof(T);
+  EXPECT_LE(at + bytes, p.size());
+  if (into) {
+    size_t old = into->size();
+    into->resize(old + count);
+    std::memcpy(into->data() + old, p.data() + at, bytes);
+  }
+  at += bytes;
+}
+
+Columns columnsOf(const std::vector<Frame>& frames) {
+  Columns c;
+  for (const auto& f : frames) {
+    if (f.kind != static_cast<uint32_t>(FrameKind::Events)) continue;
+    uint32_t h[kBatchHeader];
+    std::memcpy(h, f.payload.data(), sizeof h);
+    const size_t n = h[0], m = h[1], starts = h[2], pos = h[3], arcs = h[4], path = h[5];
+    const size_t A = h[6];
+    c.axes = static_cast<int>(A);
+    c.ownPositions += pos;
+    size_t at = sizeof h;
+    const std::string& p = f.payload;
+    take<double>(p, at, n, &c.time);
+    take<double>(p, at, pos * 3 * A, nullptr);
+    take<double>(p, at, starts * A, nullptr);
+    take<double>(p, at, m * A, &c.end);
+    take<double>(p, at, m * A, nullptr);  // mend
+    take<double>(p, at, arcs * 3, &c.center);
+    take<double>(p, at, path * A, nullptr);
+    take<double>(p, at, n, &c.dt);
+    take<float>(p, at, m, nullptr);  // feed
+    take<uint32_t>(p, at, n, &c.line);
+    take<uint32_t>(p, at, n, nullptr);  // block
+    take<int32_t>(p, at, n, nullptr);   // N
+    take<uint16_t>(p, at, n, nullptr);  // file
+    take<uint16_t>(p, at, m, nullptr);  // path count
+    take<uint8_t>(p, at, n, &c.kind);
+    take<uint8_t>(p, at, n, &c.flags);
+    take<uint8_t>(p, at, arcs, nullptr);
+    EXPECT_EQ(at, p.size()) << "the columns fill the payload exactly";
+  }
+  return c;
+}
+
+std::string binaryRun(const json& request) {
+  std::string out;
+  runViewerJob(request, [&](std::string_view f) { out.append(f); });
+  return out;
+}
+
+}  // namespace
+
+TEST(ViewerStream, FramesCarryEveryEventAsColumns) {
+  const std::string program =
+      "O0001\nG21 G90 G17 G54\n#1 = 5\nG00 X0 Y0 Z0\nG01 X10. F600.\nG03 X10. Y10. I0 J5.\n"
+      "G04 P500\n#1 = 6\nG00 Z5.\nM30\n";
+  std::vector<Frame> frames = framesOf(binaryRun({{"program", program}, {"name", "p.nc"}}));
+  ASSERT_GE(frames.size(), 3u);
+  EXPECT_EQ(frames.front().kind, static_cast<uint32_t>(FrameKind::Hello));
+  EXPECT_EQ(json::parse(frames.front().payload)["format"], "ncvm-viewer");
+  ASSERT_EQ(frames.back().kind, static_cast<uint32_t>(FrameKind::End));
+  json end = json::parse(frames.back().payload);
+  ASSERT_TRUE(end["ok"].get<bool>()) << end.dump();
+  EXPECT_EQ(end["state"]["end"], "M30");
+  EXPECT_EQ(end["files"], json::array({"p.nc"}));
+
+  Columns c = columnsOf(frames);
+  ASSERT_EQ(c.kind.size(), end["events"].get<size_t>());
+  // The same events as the JSON trace, line for line.
+  json j = runJob({{"program", program}, {"name", "p.nc"}});
+  ASSERT_EQ(countLines(j["trace"].get<std::string>()), c.kind.size());
+  std::istringstream trace(j["trace"].get<std::string>());
+  std::string l;
+  for (size_t i = 0; std::getline(trace, l); ++i) {
+    json e = json::parse(l);
+    EXPECT_EQ(e["line"].get<uint32_t>(), c.line[i]) << l;
+    EXPECT_EQ(e["type"] == "move", c.kind[i] <= 3) << l;
+    if (e["type"] == "dwell") {
+      EXPECT_EQ(c.kind[i], static_cast<uint8_t>(EventKind::Dwell));
+      EXPECT_DOUBLE_EQ(c.dt[i], 0.5);
+    }
+    if (e["type"] == "move" && e["mode"] == "ccw") {
+      EXPECT_TRUE(c.flags[i] & kArc);
+      EXPECT_EQ(c.center, (std::vector<double>{10, 5, 0}));
+    }
+  }
+  // Four moves; the block end and positions follow the moves, so none is sent apart after
+  // the first move.
+  ASSERT_EQ(c.end.size(), 4u * static_cast<size_t>(c.axes));
+  EXPECT_DOUBLE_EQ(c.end[2 * static_cast<size_t>(c.axes) + 1], 10.0);  // the arc ends at Y10
+  EXPECT_LE(c.ownPositions, 1u);
+  EXPECT_DOUBLE_EQ(c.time.back(), end["state"]["cycle_time"].get<double>());
+
+  // The steps: #1 = 5 then 6, each once; the trace lines of the events that are not moves.
+  std::vector<int> setAt;
+  std::vector<uint64_t> notes;
+  std::string noteText;
+  for (const auto& f : frames) {
+    if (f.kind == static_cast<uint32_t>(FrameKind::Steps)) {
+      json s = json::parse(f.payload);
+      for (const auto& st : s["steps"])
+        if (st[1].contains("l") && st[1]["l"].contains("#1"))
+          setAt.push_back(st[1]["l"]["#1"].get<int>());
+      for (const auto& n : s["notes"]) notes.push_back(n.get<uint64_t>());
+    }
+    if (f.kind == static_cast<uint32_t>(FrameKind::Notes)) noteText += f.payload;
+  }
+  EXPECT_EQ(setAt, (std::vector<int>{5, 6}));
+  EXPECT_EQ(countLines(noteText), notes.size());
+  for (uint64_t i : notes) EXPECT_GT(c.kind[i], 3) << "a note is not a move";
+}
+
+TEST(ViewerStream, AFailureIsAnEndFrame) {
+  std::vector<Frame> frames =
+      framesOf(binaryRun({{"program", "O1\nM30\n"}, {"setup", "[machine\n"}}));
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].kind, static_cast<uint32_t>(FrameKind::End));
+  json end = json::parse(frames[0].payload);
+  EXPECT_FALSE(end["ok"].get<bool>());
+  EXPECT_NE(end["error"].get<std::string>().find("setup error"), std::string::npos);
+}
+
+TEST_F(ServerTest, BinaryRunStreamsFramesByTextAndByPath) {
+  httplib::Client c = client();
+  // The text, with its folder as the library (M98 P2000 finds O2000.nc).
+  auto r = c.Post("/api/run.bin",
+                  json{{"program", "O0001\nG00 X1.\nM98 P2000\nM30\n"},
+                       {"name", "p1.nc"},
+                       {"root", "root"},
+                       {"dir", "parts"}}
+                      .dump(),
+                  "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/octet-stream");
+  std::vector<Frame> frames = framesOf(r->body);
+  ASSERT_FALSE(frames.empty());
+  json end = json::parse(frames.back().payload);
+  ASSERT_TRUE(end["ok"].get<bool>()) << end.dump();
+  EXPECT_EQ(end["state"]["moves"], 2);
+  // By path: the server reads the file (its size bounded by the program cap, not the body's).
+  r = c.Post("/api/run.bin", json{{"root", "root"}, {"path", "parts/p1.nc"}}.dump(),
+             "application/json");
+  ASSERT_TRUE(r);
+  frames = framesOf(r->body);
+  ASSERT_FALSE(frames.empty());
+  end = json::parse(frames.back().payload);
+  ASSERT_TRUE(end["ok"].get<bool>()) << end.dump();
+  EXPECT_EQ(end["name"], "p1.nc");
+  EXPECT_EQ(end["state"]["moves"], 2);
+  // Nothing outside the roots, by path either.
+  for (const char* bad : {"../secret.nc", "parts/link.nc", "/etc/passwd", "parts/none.nc"}) {
+    r = c.Post("/api/run.bin", json{{"root", "root"}, {"path", bad}}.dump(), "application/json");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 404) << bad;
+    EXPECT_EQ(r->body.find("SECRET"), std::string::npos) << bad;
+  }
+}
+
+TEST_F(ServerTest, BinaryRunTimeoutIsItsEndFrame) {
+  auto r =
+      client().Post("/api/run.bin",
+                    json{{"program", "O0001\nWHILE[1EQ1]DO1\nG91 G01 X0.001 F1000.\nEND1\nM30\n"},
+                         {"setup", "[limits]\nmax_blocks = 1000000000\n"}}
+                        .dump(),
+                    "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);  // the stream had begun
+  std::vector<Frame> frames = framesOf(r->body);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_GT(frames.size(), 2u) << "the events before the timeout were streamed";
+  ASSERT_EQ(frames.back().kind, static_cast<uint32_t>(FrameKind::End));
+  json end = json::parse(frames.back().payload);
+  EXPECT_FALSE(end["ok"].get<bool>());
+  EXPECT_NE(end["error"].get<std::string>().find("--timeout"), std::string::npos) << end.dump();
+}
+
+TEST_F(ServerTest, OversizedRequestsNameTheLimitAndItsOption) {
+  httplib::Client c = client();
+  // Over the body limit: refused before any handler, with the message all the same.
+  auto r = c.Post("/api/run.bin", std::string(100 * 1024, ' '), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 413);
+  EXPECT_NE(r->body.find("--max-upload-mb"), std::string::npos) << r->body;
+  // A program over the program cap.
+  r = c.Post("/api/run.bin", json{{"program", std::string(20 * 1024, 'G')}}.dump(),
+             "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 413);
+  EXPECT_NE(r->body.find("--max-program-mb"), std::string::npos) << r->body;
+}
+
+TEST_F(ServerTest, NoCompressionOnLoopback) {
+  auto r = client().Get("/api/info", {{"Accept-Encoding", "br, gzip, deflate"}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  EXPECT_EQ(r->get_header_value("Content-Encoding"), "");
+  EXPECT_TRUE(json::parse(r->body).contains("version"));
 }
