@@ -73,7 +73,7 @@ export class Workspace {
     });
     document.getElementById('setup-text').addEventListener('input', () => this.changed());
     // Leaving the page within the save delay: keep the edits now.
-    addEventListener('pagehide', () => this.edited && this.timer && this.save());
+    addEventListener('pagehide', () => this.edited && this.save());
   }
 
   async openLocalFile(file) {
@@ -123,7 +123,14 @@ export class Workspace {
   changed() {
     this.edited = true;
     clearTimeout(this.timer);
-    this.timer = setTimeout(() => this.save(), SAVE_DELAY_MS);
+    // A longer pause before copying a long text (a million lines: about 2.5 s), and then only
+    // when the page is idle, so that a save does not land on a keystroke.
+    const delay = SAVE_DELAY_MS + this.h.editor.lineCount / 500;
+    this.timer = setTimeout(() => {
+      this.timer = 0;
+      if (window.requestIdleCallback) requestIdleCallback(() => this.save(), { timeout: 2000 });
+      else this.save();
+    }, delay);
   }
 
   save() {

@@ -112,7 +112,7 @@ test('a million-line program: only the visible lines are drawn, a keystroke at l
   const drawn = await page.locator('#editor .cm-line').count();
   assert.ok(drawn < 400, `${drawn} lines in the DOM`);
   const times = [];
-  for (const key of ['1', '2', '3', 'Backspace', '4', '5', '6']) {
+  for (const key of ['1', '2', '3', 'Backspace', '4', '5', '6', 'Backspace', '7', '8']) {
     await armKeystroke();
     await page.keyboard.press(key);
     times.push(await page.evaluate(() => window.keystrokeMs));
@@ -122,7 +122,7 @@ test('a million-line program: only the visible lines are drawn, a keystroke at l
   console.log(`keystroke at line 500,000 of 1,000,000: median ${median.toFixed(1)} ms, max ${times.at(-1).toFixed(1)} ms`);
   assert.ok(median <= 100, `median keystroke ${median.toFixed(1)} ms`);
   const line = await page.evaluate(() => document.getElementById('editor').editor.view.state.doc.line(500000).text);
-  assert.match(line, /12456$/);
+  assert.match(line, /124578$/);
   // The line is highlighted as Fanuc text there too.
   assert.ok(await page.locator('#editor .cm-activeLine .t-g').count());
   await h.shot('editor-million-lines');

@@ -28,19 +28,20 @@ test('the position page: units, actual feed (moving only) and spindle speed', as
   assert.equal(await text('#pos-units'), 'mm');
   // Half-way through the first G01 (F#9 = 100) of the holes: the axes move at 100 mm/min,
   // the spindle turns at S1200 (M03 before it).
-  const feedMove = await page.evaluate(() => {
-    const link = document.getElementById('view').link;
-    for (let i = 0; i < link.model.events.length; i++) if (link.model.events[i].mode === 'linear') return i;
-    return -1;
-  });
-  assert.ok(feedMove > 0);
-  await scrubTo(feedMove * 10 + 5);
+  // Found by stepping by move (no reach into the page's model): the end of the first G01.
+  await scrubTo(0);
+  await page.selectOption('#step-by', 'move');
+  for (let k = 0; k < 30 && !/ move linear /.test(await text('#stepinfo')); k++) await page.click('#fwd');
+  await page.selectOption('#step-by', 'block');
+  assert.match(await text('#stepinfo'), / move linear /);
+  const end = Number(await page.inputValue('#scrub'));
+  await scrubTo(end - 5);
   assert.equal(await text('#act-feed'), '100.0');
   assert.equal(await text('#act-speed'), '1200');
   assert.equal(await text('#move-mode'), 'linear');
   await h.shot('screen-position');
   // At the end of that block the axes stand still.
-  await scrubTo(feedMove * 10 + 10);
+  await scrubTo(end);
   assert.equal(await text('#act-feed'), '0.0');
   // An inch program: the page says so and shows four decimals.
   await typeProgram(page, 'O0001\nG20 G90 G00 X1. Y1.\nG01 X2. F10.\nM30\n');
