@@ -163,7 +163,11 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   std::optional<OutputFolder> stockSet;
   bool tempStock = false;
   if (!outs.stockOut.empty()) {
-    stockSet.emplace(outs.stockOut);
+    try {
+      stockSet.emplace(outs.stockOut);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(fmt::format("--stock-out {}", e.what()));  // which option's folder
+    }
     stockDir = stockSet->temporary();
   } else if (!outs.report.empty() && session.setup().stock.present) {
     std::string pattern = (std::filesystem::temp_directory_path() / "ncvm-report-XXXXXX").string();
@@ -171,16 +175,6 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
       throw std::runtime_error(fmt::format("cannot create a temporary folder: {}", std::strerror(errno)));
     stockDir = pattern;
     tempStock = true;
-  }
-  if (!outs.stockOut.empty()) {
-    // Said here in words: the stock writers would fail later with a raw filesystem error.
-    std::error_code ec;
-    std::filesystem::create_directories(outs.stockOut, ec);
-    if (!ec && !std::filesystem::is_directory(outs.stockOut, ec))
-      ec = std::make_error_code(std::errc::not_a_directory);
-    if (ec)
-      throw std::runtime_error(fmt::format("--stock-out {}: cannot make the folder: {}", outs.stockOut,
-                                           ec == std::errc::not_a_directory ? "a file is in the way" : ec.message()));
   }
   if (!stockDir.empty()) session.simulateStock(stockDir);
   for (const auto& w : session.store().warnings()) fmt::format_to(errAt, "ncvm: warning: {}\n", w);

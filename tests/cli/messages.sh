@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# What a newcomer reads: an unknown command named with the nearest one, "no program to run"
-# with the file, --stock-out failures in words, --help with FILE/DIR, exit codes and an
+# What a newcomer reads: an unknown command named with the nearest one, an empty program
+# named by its file, --stock-out failures in words, --help with FILE/DIR, exit codes and an
 # example, and control bytes of a program escaped in alarm lines.
 set -u
 ncvm=$1
@@ -15,14 +15,15 @@ grep -q '^ncvm: unknown command rnu (did you mean run?)$' "$tmp/err" || fail "un
 
 : >"$tmp/empty.nc"
 "$ncvm" run "$tmp/empty.nc" >"$tmp/out" 2>"$tmp/err"; rc=$?
-[ $rc = 2 ] || fail "empty program: exit $rc"
-grep -q "no program to run: $tmp/empty.nc" "$tmp/err" || fail "no program to run without the file"
+# An empty file is an alarm with its file and line (issue 24.1), so it names the file too.
+[ $rc = 3 ] || fail "empty program: exit $rc"
+grep -q "$tmp/empty.nc:1:1: PS9008" "$tmp/out" || fail "the empty file's alarm without the file"
 
 printf '[stock]\ndiameter = 50\nlength = 60\n[machine]\nkind = "lathe"\n' >"$tmp/stock.toml"
 : >"$tmp/afile"
 "$ncvm" run "$dir/ok.nc" --setup "$tmp/stock.toml" --stock-out "$tmp/afile/sub" >"$tmp/out" 2>"$tmp/err"; rc=$?
 [ $rc = 2 ] || fail "--stock-out under a file: exit $rc"
-grep -q "^ncvm: --stock-out $tmp/afile/sub: cannot make the folder: " "$tmp/err" || fail "--stock-out message"
+grep -q "^ncvm: --stock-out $tmp/afile/sub: cannot create: Not a directory" "$tmp/err" || fail "--stock-out message"
 grep -qi 'filesystem error' "$tmp/err" && fail "raw std::filesystem error"
 
 "$ncvm" run --help >"$tmp/out" 2>&1 || fail "--help exit $?"

@@ -40,7 +40,7 @@ export function renderPosition(el, model, tool, state) {
   const u = unitsOf(state);
   const row = (label, vals) =>
     `<tr><th>${label}</th>${names.map((n, a) => `<td data-axis="${n}">${fmt(vals?.[a] ?? 0, u === 'inch' ? 4 : 3)}</td>`).join('')}</tr>`;
-  const ev = tool.event;
+  const ev = tool.index >= 0 ? eventAt(model, tool.index) : null; // the move in progress, else the last event done
   const moving = ev && ev.type === 'move' && tool.togo.some((v) => Math.abs(v) > 1e-9);
   const sp = spindleAt(model, tool.index);
   const rpm = sp && sp.dir !== 'stop' ? sp.rpm : 0;
