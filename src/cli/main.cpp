@@ -31,6 +31,7 @@
 #include "report/atomic_file.hpp"
 #include "report/clock_time.hpp"
 #include "report/html_report.hpp"
+#include "report/report_recorder.hpp"
 #include "report/output_folder.hpp"
 #include "report/temp_cleanup.hpp"
 #include "report/trace_writer.hpp"
@@ -162,14 +163,22 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   std::string stockDir;
   std::optional<OutputFolder> stockSet;
   bool tempStock = false;
-  if (!outs.stockOut.empty()) {
+  // --stock-out without [stock]: nothing to simulate, said once; the run and its other
+  // outputs (the report says so too) go on.
+  const bool noStock = !outs.stockOut.empty() && !session.setup().stock.present;
+  if (noStock)
+    fmt::format_to(errAt,
+                   "ncvm: warning: --stock-out {}: no stock in the setup (no [stock] section): "
+                   "nothing written there\n",
+                   outs.stockOut);
+  if (!outs.stockOut.empty() && !noStock) {
     try {
       stockSet.emplace(outs.stockOut);
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(fmt::format("--stock-out {}", e.what()));  // which option's folder
     }
     stockDir = stockSet->temporary();
-  } else if (!outs.report.empty() && session.setup().stock.present) {
+  } else if (!outs.report.empty() && outs.stockOut.empty() && session.setup().stock.present) {
     std::string pattern = (std::filesystem::temp_directory_path() / "ncvm-report-XXXXXX").string();
     if (!::mkdtemp(pattern.data()))
       throw std::runtime_error(fmt::format("cannot create a temporary folder: {}", std::strerror(errno)));
@@ -190,7 +199,17 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   std::optional<MachineStateFile> machineState;
   if (!machineStatePath.empty()) machineState.emplace(machineStatePath, outs.lockWait);
   const nlohmann::json* memory = machineState ? machineState->load(session.setup()) : nullptr;
-  Session::Result r = session.run(trace.get(), memory);
+  // The report's tool path, G31 moves and offset writes, recorded beside the trace.
+  std::unique_ptr<ReportRecorder> recorder;
+  FanoutSink sinks;
+  EventSink* sink = trace.get();
+  if (!outs.report.empty()) {
+    recorder = std::make_unique<ReportRecorder>(session.setup());
+    if (trace) sinks.add(trace.get());
+    sinks.add(recorder.get());
+    sink = &sinks;
+  }
+  Session::Result r = session.run(sink, memory);
   // Every output is attempted even when one fails (a full disk): the machine state first,
   // then the others; each failure is reported with its own file, and the run exits 2.
   std::vector<std::string> failed;
@@ -229,7 +248,11 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     const Program* m = session.main();
     attempt([&] {
       const std::string title = fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label);
-      writeFileAtomic(outs.report, htmlReport(r.state, title, stockDir));
+      ReportInputs in;
+      in.recorder = recorder.get();
+      in.setup = &session.setup();
+      in.files = &session.files();
+      writeFileAtomic(outs.report, htmlReport(r.state, title, stockDir, in));
     });
   }
   if (tempStock) std::filesystem::remove_all(stockDir);

@@ -6,34 +6,18 @@
 #include <fstream>
 #include <sstream>
 
-#include "sim/deviation.hpp"
 #include "report/clock_time.hpp"
+#include "report/mill_pictures.hpp"
+#include "report/report_sections.hpp"
+#include "report/svg_chart.hpp"
+#include "sim/deviation.hpp"
 
 namespace ncvm {
 
 namespace {
 
 std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+  return escapeXml(s);
 }
 
 std::string base64(const std::string& in) {
@@ -77,10 +61,35 @@ std::string where(const nlohmann::json& a) {
   return escape(s);
 }
 
+// What a stock picture covers, from its analysis entry: "X -10 ... 35 mm, Y -30 ... 15 mm".
+std::string extentText(const nlohmann::json& p, const std::string& units) {
+  if (!p.contains("extent") || !p["extent"].is_object()) return "";
+  std::string s;
+  // Across first, then up, as the picture is seen.
+  for (const char* axis : {"x", "z", "y", "radius"}) {
+    if (!p["extent"].contains(axis)) continue;
+    const auto& range = p["extent"][axis];
+    if (!range.is_array() || range.size() != 2) continue;
+    const std::string a = axis;
+    std::string name = a == "x"   ? "X (left to right)"
+                       : a == "y" ? "Y (bottom to top)"
+                       : a == "z" ? "Z (left to right)"
+                                  : "X as a radius (bottom to top)";
+    if (!s.empty()) s += ", ";
+    s += fmt::format("{} {:.3f} &hellip; {:.3f} {}", name, range[0].get<double>(),
+                     range[1].get<double>(), escape(units));
+  }
+  return s.empty() ? s : ". Covers " + s + ".";
+}
+
 }  // namespace
 
 std::string htmlReport(const nlohmann::json& state, const std::string& title,
-                       const std::string& pictureDir) {
+                       const std::string& pictureDir, const ReportInputs& in) {
+  const std::string units =
+      state.contains("modal") && state["modal"].is_object() && state["modal"].contains("units")
+          ? state["modal"]["units"].get<std::string>()
+          : std::string("mm");
   std::string h;
   h +=
       "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" + escape(title) + "</title>\n";
@@ -96,14 +105,22 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
     h += "<tr><th class=\"l\">" + k + "</th><td class=\"l\">" + v + "</td></tr>\n";
   };
   row("program", escape(state.value("program", std::string())));
+  if (in.setup)
+    row("machine", fmt::format("{} ({})", in.setup->kind == MachineKind::Lathe ? "lathe" : "mill",
+                               escape(in.setup->control)));
+  row("units", escape(units) + " (lengths below are in these units unless marked)");
   row("ended", escape(state.value("end", std::string())));
   row("blocks", num(state.value("blocks", nlohmann::json(0)), 0));
   row("moves", num(state.value("moves", nlohmann::json(0)), 0));
   double t = state.value("cycle_time", 0.0);
-  row("cycle time", fmt::format("{:.2f} s ({})", t, clockTime(t)));
+  const bool modelled = state.contains("timing") && state["timing"].is_object() &&
+                        state["timing"].value("model", std::string()) == "dynamic";
+  row("cycle time", fmt::format("{:.2f} s ({}), {}", t, clockTime(t),
+                                modelled ? "modelled" : "length &divide; feed, not modelled"));
   if (state.contains("path_length"))
-    row("path length", fmt::format("rapid {} / feed {}", num(state["path_length"]["rapid"], 3),
-                                   num(state["path_length"]["feed"], 3)));
+    row("path length",
+        fmt::format("rapid {} {u} / feed {} {u}", num(state["path_length"]["rapid"], 3),
+                    num(state["path_length"]["feed"], 3), fmt::arg("u", escape(units))));
   h += "</table>\n";
 
   h += "<h2>Alarms and warnings</h2>\n";
@@ -121,9 +138,16 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
     h += "</ul>\n";
   }
 
-  if (state.contains("stock") && state["stock"].is_object()) {
+  h += timeSection(state);
+  h += toolpathSection(in, units);
+  h += probingSection(in, units);
+
+  h += "<h2>Stock</h2>\n";
+  if (!state.contains("stock") || !state["stock"].is_object()) {
+    h += "<p class=\"no-stock\">" + escape(in.noStock) + "</p>\n";
+  } else {
     const auto& st = state["stock"];
-    h += "<h2>Stock</h2>\n";
+    const std::string stockUnits = st.value("units", units);
     if (st.contains("pictures")) {
       for (const auto& p : st["pictures"]) {
         std::string file = p.value("file", std::string());
@@ -138,7 +162,15 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
           h += "<img alt=\"" + escape(file) + "\" src=\"data:image/png;base64," + base64(data) +
                "\">";
         }
-        h += "\n<figcaption>" + escape(p.value("title", file)) + "</figcaption>\n</figure>\n";
+        if (p.contains("scale") && p["scale"].is_object()) {
+          const auto& sc = p["scale"];
+          h += colourScaleSvg(
+              sc.value("from", 0.0), sc.value("to", 0.0),
+              fmt::format("{} ({})", sc.value("quantity", std::string("Z")), stockUnits),
+              heightColour);
+        }
+        h += "\n<figcaption>" + escape(p.value("title", file)) + extentText(p, stockUnits) +
+             "</figcaption>\n</figure>\n";
       }
     }
     if (st.contains("deviation") && !notMeasuredText(st["deviation"]).empty()) {
@@ -147,13 +179,16 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
     } else if (st.contains("deviation") && st["deviation"].is_object()) {
       const auto& d = st["deviation"];
       h += "<h3>Deviation from the target</h3>\n<table>\n";
-      h += "<tr><th>tolerance</th><th>max</th><th>mean</th><th>max excess</th><th>max "
-           "gouge</th><th>within tolerance</th></tr>\n";
+      h += fmt::format(
+          "<tr><th>tolerance ({0})</th><th>max ({0})</th><th>mean ({0})</th><th>max excess "
+          "({0})</th><th>max gouge ({0})</th><th>within tolerance</th></tr>\n",
+          escape(stockUnits));
       h += "<tr><td>" + num(d["tolerance"]) + "</td><td>" + num(d["max"]) + "</td><td>" +
            num(d["mean"]) + "</td><td>" + num(d["max_excess"]) + "</td><td>" + num(d["max_gouge"]) +
            "</td><td>" + fmt::format("{:.1f} %", 100 * d.value("in_tolerance", 0.0)) +
            "</td></tr>\n</table>\n";
-      h += "<table>\n<tr><th>from</th><th>to</th><th>share</th></tr>\n";
+      h += fmt::format("<table>\n<tr><th>from ({0})</th><th>to ({0})</th><th>share</th></tr>\n",
+                       escape(stockUnits));
       for (const auto& b : d["bands"])
         h += "<tr><td>" + (b["from"].is_null() ? std::string("-&infin;") : num(b["from"])) +
              "</td><td>" + (b["to"].is_null() ? std::string("+&infin;") : num(b["to"])) +
@@ -162,11 +197,17 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
     }
     if (st.contains("collisions") && !st["collisions"].empty()) {
       h += "<h3>Collisions</h3>\n<table>\n<tr><th class=\"l\">block</th><th "
-           "class=\"l\">what</th><th>material</th></tr>\n";
-      for (const auto& c : st["collisions"])
-        h += "<tr><td class=\"l\">" + where(c) + "</td><td class=\"l\">" +
-             escape(c.value("kind", std::string())) + "</td><td>" +
-             num(c.value("amount", nlohmann::json(0.0)), 6) + "</td></tr>\n";
+           "class=\"l\">what</th><th>amount</th></tr>\n";
+      const bool lathe = st.value("kind", std::string()) == "lathe";
+      for (const auto& c : st["collisions"]) {
+        const std::string kind = c.value("kind", std::string());
+        // docs/stock-analysis.md: a lathe's rapid and holder collisions are areas, the
+        // rest depths or distances.
+        const std::string unit = lathe && kind != "probe" ? stockUnits + "&sup2;" : stockUnits;
+        h += "<tr><td class=\"l\">" + where(c) + "</td><td class=\"l\">" + escape(kind) +
+             "</td><td>" + num(c.value("amount", nlohmann::json(0.0)), 6) + " " + unit +
+             "</td></tr>\n";
+      }
       h += "</table>\n";
     }
   }

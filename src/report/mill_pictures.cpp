@@ -37,6 +37,27 @@ void put(RgbImage& img, int x, int y, double r, double g, double b) {
 
 }  // namespace
 
+std::array<double, 3> heightColour(double u) {
+  // Stops of a viridis-like scale: monotonic lightness, distinct hues, no white.
+  static constexpr std::array<std::array<double, 3>, 5> stops{{{0.267, 0.005, 0.329},
+                                                               {0.231, 0.322, 0.545},
+                                                               {0.129, 0.569, 0.549},
+                                                               {0.369, 0.788, 0.384},
+                                                               {0.993, 0.906, 0.144}}};
+  u = std::clamp(u, 0.0, 1.0) * (stops.size() - 1);
+  const size_t k = std::min(stops.size() - 2, static_cast<size_t>(u));
+  const double t = u - static_cast<double>(k);
+  std::array<double, 3> c{};
+  for (size_t i = 0; i < 3; ++i) c[i] = stops[k][i] + t * (stops[k + 1][i] - stops[k][i]);
+  return c;
+}
+
+std::pair<float, float> heightRange(const HeightField& f) {
+  float lo, hi;
+  range(f, lo, hi);
+  return {lo, hi};
+}
+
 RgbImage millHeightMap(const HeightField& f, int maxSide) {
   Sampler s(f, maxSide);
   RgbImage img(s.w, s.h);
@@ -45,8 +66,8 @@ RgbImage millHeightMap(const HeightField& f, int maxSide) {
   double span = hi > lo ? hi - lo : 1.0;
   for (int y = 0; y < s.h; ++y)
     for (int x = 0; x < s.w; ++x) {
-      double v = (f.at(s.i(x), s.j(y)) - lo) / span;
-      put(img, x, y, v, v, v);
+      auto c = heightColour((f.at(s.i(x), s.j(y)) - lo) / span);
+      put(img, x, y, c[0], c[1], c[2]);
     }
   return img;
 }

@@ -330,7 +330,8 @@ nlohmann::json LatheStock::writeOutputs(const std::string& dir, const ClipperLib
   writeFileAtomic(file("profile.svg"), svg);
   a["pictures"].push_back(
       {{"file", "profile.svg"},
-       {"title", "Final profile (section through the axis); target coloured by deviation"}});
+       {"title", "Final profile (section through the axis); target coloured by deviation"},
+       {"extent", {{"z", {zlo - pad, zhi + pad}}, {"radius", {-rhi - pad, rhi + pad}}}}});
 
   // deviation.svg: the signed deviation along the target, with the tolerance band.
   if (!samples.empty()) {

@@ -282,15 +282,25 @@ nlohmann::json MillStock::analysis(const std::string& outDir) {
     std::filesystem::create_directories(outDir);
     auto out = [&](const char* name) { return (std::filesystem::path(outDir) / name).string(); };
     const MillTarget* tp = target_ ? &*target_ : nullptr;
+    // What each picture covers, seen from above (the report's captions and scales).
+    const nlohmann::json extent = {{"x", {f.x0(), f.x0() + f.cell() * f.nx()}},
+                                   {"y", {f.y0(), f.y0() + f.cell() * f.ny()}}};
     writeFileAtomic(out("top_view.png"), encodePng(millTopView(f, tp)));
-    pictures.push_back({{"file", "top_view.png"}, {"title", "Top view (uncut red, gouge blue)"}});
+    pictures.push_back({{"file", "top_view.png"},
+                        {"title", "Top view (uncut red, gouge blue)"},
+                        {"extent", extent}});
     if (tp) {
       writeFileAtomic(out("deviation.png"), encodePng(millDeviationMap(f, *tp)));
       pictures.push_back({{"file", "deviation.png"},
-                          {"title", "Deviation from the target (green within tolerance)"}});
+                          {"title", "Deviation from the target (green within tolerance)"},
+                          {"extent", extent}});
     }
     writeFileAtomic(out("height_map.png"), encodePng(millHeightMap(f)));
-    pictures.push_back({{"file", "height_map.png"}, {"title", "Height map (white = top)"}});
+    const auto [lo, hi] = heightRange(f);
+    pictures.push_back({{"file", "height_map.png"},
+                        {"title", "Height map (Z: violet lowest, yellow highest)"},
+                        {"extent", extent},
+                        {"scale", {{"quantity", "Z"}, {"from", lo}, {"to", hi}}}});
     writeStl(out("stock.stl"), f);
     writeFileAtomic(out("stock.hmap"), encodeHeightMap(f));
     files = {{"stl", "stock.stl"}, {"height_map", "stock.hmap"}};

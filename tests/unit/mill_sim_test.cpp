@@ -405,7 +405,18 @@ TEST(MillPictures, UncutCellsAreRed) {
   RgbImage dev = millDeviationMap(f, target);
   EXPECT_GT(px(dev, 3, 1)[0], 200);
   EXPECT_GT(px(dev, 3, 8)[1], px(dev, 3, 8)[0]);
-  EXPECT_EQ(px(millHeightMap(f), 0, 0)[0], 255);
+  // The height map is a colour scale, never white: the top (uncut) yellow, the cut floor
+  // dark violet, each the legend's colour (heightColour) at its end.
+  RgbImage height = millHeightMap(f);
+  const uint8_t* high = px(height, 3, 1);
+  const uint8_t* low = px(height, 3, 8);
+  EXPECT_GT(high[0], 200);
+  EXPECT_GT(high[1], 200);
+  EXPECT_LT(high[2], 80);
+  EXPECT_LT(low[0], 100);
+  EXPECT_LT(low[1], 40);
+  EXPECT_GT(low[2], 60);
+  EXPECT_EQ(high[0], static_cast<uint8_t>(heightColour(1.0)[0] * 255 + 0.5));
 }
 
 }  // namespace
