@@ -10,6 +10,7 @@ import { PathLink } from './link.js';
 import { initTheme, themeGrid } from './theme.js';
 import { recordRun } from './counters.js';
 import { Playback } from './playback.js';
+import { ColourBy } from './colour_by.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -18,6 +19,7 @@ const SUB = 10; // slider positions per event: scrubbing shows a move part-way
 const editor = new Editor($('editor'));
 const view = new View3D($('view'));
 const progress = new RunProgress($('view'));
+const colourBy = new ColourBy(view, document.querySelector('.legend'));
 initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
@@ -153,6 +155,7 @@ async function run() {
   for (const w of [...answer.check.warnings, ...s.warnings]) if (mine(w.file)) marks.push({ line: w.line, kind: 'warning', text: `${w.code} ${w.text}` });
   editor.setMarks(marks);
   view.setModel(model);
+  colourBy.setModel(model);
   themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
