@@ -58,8 +58,8 @@ export class PathLink {
     let down = null;
     canvas.addEventListener('pointerdown', (e) => (down = { x: e.clientX, y: e.clientY }));
     canvas.addEventListener('pointerup', (e) => {
-      // A click, not the end of an orbit or a pan.
-      if (down && Math.hypot(e.clientX - down.x, e.clientY - down.y) < 4) this.pickAt(e.clientX, e.clientY);
+      // A click, not the end of an orbit or a pan; while measuring, the clicks are the measure's.
+      if (down && !view.measuring && Math.hypot(e.clientX - down.x, e.clientY - down.y) < 4) this.pickAt(e.clientX, e.clientY);
       down = null;
     });
   }

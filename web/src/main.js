@@ -11,6 +11,7 @@ import { initTheme, themeGrid } from './theme.js';
 import { recordRun } from './counters.js';
 import { Playback } from './playback.js';
 import { ColourBy } from './colour_by.js';
+import { Measure } from './measure.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -20,6 +21,7 @@ const editor = new Editor($('editor'));
 const view = new View3D($('view'));
 const progress = new RunProgress($('view'));
 const colourBy = new ColourBy(view, document.querySelector('.legend'));
+const measure = new Measure(view, $('measure'), $('measure-panel'));
 initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
@@ -156,6 +158,7 @@ async function run() {
   editor.setMarks(marks);
   view.setModel(model);
   colourBy.setModel(model);
+  measure.setModel(model);
   themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
