@@ -822,6 +822,41 @@ TEST(ViewerStream, FramesCarryEveryEventAsColumns) {
   for (uint64_t i : notes) EXPECT_GT(c.kind[i], 3) << "a note is not a move";
 }
 
+// Where work zero is on the machine, before the events frame of its batch: the page draws
+// the path fixed on the machine. A switch to G55 after two cutting moves that the time
+// model still holds in its look-ahead comes after them (the timing stage keeps the order).
+TEST(ViewerStream, WorkZeroMovesAreSentInOrderWithTheMoves) {
+  const std::string program =
+      "O0001\nG21 G90 G17 G54\nG00 X0 Y0 Z0\nG01 X10. F600.\nY10.\nG55\nG01 X5.\n"
+      "G10 L2 P2 X20.\nG01 X6.\nM30\n";
+  const std::string setup =
+      "[timing]\nmodel = \"dynamic\"\n[work_offsets]\nG54 = [1.0, 2.0, 3.0]\nG55 = [5.0, 6.0, "
+      "7.0]\n";
+  std::vector<Frame> frames =
+      framesOf(binaryRun({{"program", program}, {"name", "p.nc"}, {"setup", setup}}));
+  EXPECT_EQ(json::parse(frames.front().payload)["frame"], "work");
+  json origins = json::array();
+  bool eventsSeen = false;
+  for (const auto& f : frames) {
+    eventsSeen = eventsSeen || f.kind == static_cast<uint32_t>(FrameKind::Events);
+    if (f.kind != static_cast<uint32_t>(FrameKind::Origins)) continue;
+    EXPECT_FALSE(eventsSeen) << "origins come before the events of their batch";
+    json o = json::parse(f.payload);
+    for (const auto& each : o["origins"]) origins.push_back(each);
+  }
+  Columns c = columnsOf(frames);
+  std::vector<size_t> moves;  // event index of each move
+  for (size_t i = 0; i < c.kind.size(); ++i)
+    if (c.kind[i] <= 3) moves.push_back(i);
+  ASSERT_EQ(moves.size(), 5u);
+  ASSERT_EQ(origins.size(), 3u) << origins.dump();
+  EXPECT_EQ(origins[0], json::array({0, 1.0, 2.0, 3.0}));
+  EXPECT_EQ(origins[1], json::array({moves[3], 5.0, 6.0, 7.0})) << "from G01 X5. on";
+  EXPECT_GT(origins[2][0].get<size_t>(), moves[3]);
+  EXPECT_LE(origins[2][0].get<size_t>(), moves[4]);
+  EXPECT_EQ(origins[2][1], 20.0);
+}
+
 TEST(ViewerStream, AFailureIsAnEndFrame) {
   std::vector<Frame> frames =
       framesOf(binaryRun({{"program", "O1\nM30\n"}, {"setup", "[machine\n"}}));

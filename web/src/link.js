@@ -4,6 +4,7 @@
 // change of how moves are stored touches these two functions only.
 import * as THREE from 'three';
 import { movePointsAt } from './model.js';
+import { drawnPoint } from './machine_frame.js';
 
 // The program line of move i when it is in `file` (the editor's program), else 0.
 export function moveLine(model, i, file) {
@@ -11,9 +12,9 @@ export function moveLine(model, i, file) {
   return !file || model.answer.files?.[model.file[e]] === file ? model.line[e] : 0;
 }
 
-// The points of move i (work coordinates, a polyline).
+// The points of move i as drawn (work coordinates fixed on the machine, machine_frame.js).
 export function movePoints(model, i) {
-  return movePointsAt(model, i);
+  return movePointsAt(model, i).map((p) => drawnPoint(model, i, p));
 }
 
 // line -> moves: the moves of each line of `file`, as index ranges into one Int32Array

@@ -12,6 +12,7 @@ import { recordRun } from './counters.js';
 import { Playback } from './playback.js';
 import { ColourBy } from './colour_by.js';
 import { Measure } from './measure.js';
+import { drawnTool } from './machine_frame.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -188,7 +189,7 @@ function goTo(pos) {
   const p = ui.p / SUB;
   const tool = toolAt(m, p);
   const done = Math.floor(p);
-  view.setProgress(verticesDone(m, done), tool.work);
+  view.setProgress(verticesDone(m, done), drawnTool(m, tool));
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
   const state = stateAt(m, idx);
