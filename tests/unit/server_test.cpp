@@ -342,6 +342,33 @@ TEST_F(ServerTest, RunsWithTheProgramsFolderAsLibrary) {
   EXPECT_EQ(j["state"]["moves"], 2);  // O2000 was found in the folder
 }
 
+// A program of the server's folders sent without a setup runs with its own setup, by the rule
+// of `ncvm list` (a variant NAME-VARIANT.nc with NAME.toml), by path and as edited text; a
+// setup sent wins, and an empty one is the default machine.
+TEST_F(ServerTest, AProgramWithoutASetupRunsWithItsOwn) {
+  write(root.path / "parts" / "cut-x150.nc", "O0003\nG90 G54 G00 X1.\nM30\n");
+  write(root.path / "parts" / "cut.toml", "[work_offsets]\nG54 = [10.0, 0.0, 0.0]\n");
+  auto machineX = [&](const json& body) {
+    auto r = post(body.dump());
+    EXPECT_TRUE(r);
+    if (!r) return -1.0;
+    EXPECT_EQ(r->status, 200) << r->body;
+    json j = json::parse(r->body);
+    return j["state"]["position"]["machine"][0].get<double>();
+  };
+  EXPECT_DOUBLE_EQ(machineX({{"root", "root"}, {"path", "parts/cut-x150.nc"}}), 11.0);
+  EXPECT_DOUBLE_EQ(machineX({{"program", "O0003\nG90 G54 G00 X1.\nM30\n"},
+                             {"name", "cut-x150.nc"},
+                             {"root", "root"},
+                             {"dir", "parts"}}),
+                   11.0);
+  EXPECT_DOUBLE_EQ(
+      machineX({{"root", "root"}, {"path", "parts/cut-x150.nc"}, {"setup", "[machine]\n"}}), 1.0);
+  // Not a program of a folder: the default machine.
+  EXPECT_DOUBLE_EQ(
+      machineX({{"program", "O0003\nG90 G54 G00 X1.\nM30\n"}, {"name", "cut-x150.nc"}}), 1.0);
+}
+
 // Issue 26 item 7: parts/link.nc, a symlink to a file outside the roots, was loaded as a
 // library program, so M98 P9999 ran it (its text showed in the answer) while /api/file
 // refused it; and answers named files by the server's absolute paths.

@@ -70,7 +70,7 @@ async function openFile(root, path) {
   if (!f.ok) return setStatus(f.error, 'bad');
   editor.text = f.text;
   $('setup-text').value = f.setup || '';
-  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text };
+  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text, setup: f.setup || '' };
   $('files').value = `${root}|${path}`;
   workspace.opened(sourceKey());
   setStatus(`${path}${f.setup_path ? ` (setup ${f.setup_path})` : ''}`);
@@ -134,7 +134,11 @@ async function run() {
   const unchanged = ui.source.kind === 'server' && ui.source.text === text;
   if (unchanged) Object.assign(req, { root: ui.source.root, path: ui.source.path });
   else req.program = text;
-  if ($('setup-text').value.trim()) req.setup = $('setup-text').value;
+  // The setup tab's text when it is one of the user's; a program of the server's folders with
+  // its own setup as it came (or none) runs with the setup the server pairs with it, by the rule
+  // of `ncvm list` (docs/setup-format.md).
+  const setup = $('setup-text').value;
+  if (setup.trim() && !(ui.source.kind === 'server' && setup === ui.source.setup)) req.setup = setup;
   if (ui.source.root && !unchanged) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
   progress.set('running');
   const lines = editor.lineCount || 0;
