@@ -884,6 +884,41 @@ TEST(ViewerStream, WorkZeroMovesAreSentInOrderWithTheMoves) {
   EXPECT_EQ(origins[2][1], 20.0);
 }
 
+// The physical tools for the page to draw: a ball mill's profile rises to its radius at its
+// rim, a face mill is short, a probe is its ball, a tool without a diameter is left out; a
+// lathe insert is its outline on the side its tip direction gives.
+TEST(ViewerTools, TheSetupsToolsAsTheSimulationShapesThem) {
+  json j = runJob({{"program", "O1\nM30\n"},
+                   {"setup",
+                    "[tools.1]\ntype = \"ball\"\ndiameter = 10.0\n[tools.2]\ntype = \"face\"\n"
+                    "diameter = 50.0\n[tools.3]\ntype = \"probe\"\ndiameter = 4.0\n"
+                    "[tools.4]\ntype = \"flat\"\n"}});
+  ASSERT_TRUE(j["ok"].get<bool>()) << j.dump();
+  const json& t = j["tools"];
+  EXPECT_EQ(t["1"]["profile"].front(), json::array({0.0, 0.0}));
+  EXPECT_EQ(t["1"]["profile"].back(), json::array({5.0, 5.0}));
+  EXPECT_DOUBLE_EQ(t["2"]["length"].get<double>(), 17.5);
+  EXPECT_EQ(t["3"], json({{"type", "probe"}, {"diameter", 4.0}}));
+  EXPECT_FALSE(t.contains("4"));
+  json lathe = runJob({{"program", "O1\nM30\n"},
+                       {"setup",
+                        "[machine]\nkind = \"lathe\"\n[tools.1]\ntype = \"insert\"\n"
+                        "nose_radius = 0.8\ntip = 3\n"}});
+  ASSERT_TRUE(lathe["ok"].get<bool>()) << lathe.dump();
+  const json& outline = lathe["tools"]["1"]["outline"];
+  ASSERT_GT(outline.size(), 3u);
+  double rmin = 1e9, zmin = 1e9, rmax = -1e9;
+  for (const auto& p : outline) {
+    rmin = std::min(rmin, p[0].get<double>());
+    zmin = std::min(zmin, p[1].get<double>());
+    rmax = std::max(rmax, p[0].get<double>());
+  }
+  // Tip 3: the imaginary tip is the outline's lower left corner, the insert above and right.
+  EXPECT_NEAR(rmin, 0.0, 0.01);
+  EXPECT_NEAR(zmin, 0.0, 0.01);
+  EXPECT_GT(rmax, 5.0);
+}
+
 TEST(ViewerStream, AFailureIsAnEndFrame) {
   std::vector<Frame> frames =
       framesOf(binaryRun({{"program", "O1\nM30\n"}, {"setup", "[machine\n"}}));

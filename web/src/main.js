@@ -13,6 +13,7 @@ import { Playback } from './playback.js';
 import { ColourBy } from './colour_by.js';
 import { Measure } from './measure.js';
 import { drawnTool } from './machine_frame.js';
+import { ToolShapes } from './tool_shape.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -23,6 +24,7 @@ const view = new View3D($('view'));
 const progress = new RunProgress($('view'));
 const colourBy = new ColourBy(view, document.querySelector('.legend'));
 const measure = new Measure(view, $('measure'), $('measure-panel'));
+const toolShapes = new ToolShapes(view);
 initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
@@ -164,6 +166,7 @@ async function run() {
   view.setModel(model);
   colourBy.setModel(model);
   measure.setModel(model);
+  toolShapes.setModel(model);
   themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
@@ -193,6 +196,7 @@ function goTo(pos) {
   const p = ui.p / SUB;
   const tool = toolAt(m, p);
   const done = Math.floor(p);
+  toolShapes.update(tool.index);
   view.setProgress(verticesDone(m, done), drawnTool(m, tool));
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
