@@ -90,14 +90,24 @@ std::optional<nlohmann::json> FileCatalog::read(const std::string& root, const s
   nlohmann::json out{
       {"root", root}, {"path", path}, {"text", *text}, {"setup", nullptr}, {"setup_path", nullptr}};
   out["dir"] = fs::path(path).parent_path().generic_string();
-  std::string setup = setupFor(*r, path);
-  if (!setup.empty())
-    if (auto full2 = resolveInside(r->path, setup))
-      if (auto st = slurp(*full2, maxBytes)) {
-        out["setup"] = *st;
-        out["setup_path"] = setup;
-      }
+  if (auto setup = setupOf(root, path, maxBytes)) {
+    out["setup"] = setup->second;
+    out["setup_path"] = setup->first;
+  }
   return out;
+}
+
+std::optional<std::pair<std::string, std::string>> FileCatalog::setupOf(
+    const std::string& root, const std::string& programPath, uint64_t maxBytes) const {
+  const Root* r = find(root);
+  if (!r) return std::nullopt;
+  std::string setup = setupFor(*r, programPath);
+  if (setup.empty()) return std::nullopt;
+  auto full = resolveInside(r->path, setup);
+  if (!full) return std::nullopt;
+  auto text = slurp(*full, maxBytes);
+  if (!text) return std::nullopt;
+  return std::pair{setup, *text};
 }
 
 std::optional<fs::path> FileCatalog::folder(const std::string& root, const std::string& dir) const {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ncvm::server {
@@ -32,6 +33,10 @@ class FileCatalog {
   std::optional<nlohmann::json> read(const std::string& root, const std::string& path,
                                      uint64_t maxBytes) const;
 
+  // The setup file programPath runs with (setupFor) and its text: {path, text}, if any.
+  std::optional<std::pair<std::string, std::string>> setupOf(const std::string& root,
+                                                             const std::string& programPath,
+                                                             uint64_t maxBytes) const;
   // The folder `dir` of a root as a canonical path (for M98/G65 calls), if it is one.
   std::optional<std::filesystem::path> folder(const std::string& root,
                                               const std::string& dir) const;

@@ -135,9 +135,23 @@ RunRequest runRequestFromBody(const std::string& body, const ServerConfig& cf) {
   } else {
     job["program"] = in["program"];
   }
+  // A program of the server's folders sent without a setup runs with its own, by the rule of
+  // `ncvm list` and `make demo` (core/program_files.hpp); the --setup file is for programs
+  // that have none.
+  std::optional<std::pair<std::string, std::string>> own;
+  if (!(in.contains("setup") && in["setup"].is_string()) && in.contains("root") &&
+      in["root"].is_string()) {
+    const std::string program =
+        byPath ? in["path"].get<std::string>()
+               : (std::filesystem::path(dir) / job["name"].get<std::string>()).generic_string();
+    own = cf.catalog.setupOf(in["root"].get<std::string>(), program, cf.maxBodyBytes);
+  }
   if (in.contains("setup") && in["setup"].is_string()) {
     job["setup"] = in["setup"];
     job["setup_name"] = baseName(field(in, "setup_name", "setup.toml"));
+  } else if (own) {
+    job["setup"] = own->second;
+    job["setup_name"] = baseName(own->first);
   } else if (!cf.setupText.empty()) {
     job["setup"] = cf.setupText;
     job["setup_name"] = cf.setupName;

@@ -12,6 +12,7 @@
 #include "server/safe_path.hpp"
 #include "server/step_recorder.hpp"
 #include "server/viewer_stream.hpp"
+#include "server/viewer_tools.hpp"
 
 namespace ncvm::server {
 
@@ -221,6 +222,8 @@ void finalParts(nlohmann::json& out, Session& session, Session::Result& r,
   out["load_warnings"] = session.store().warnings();
   out["machine"] = {{"kind", session.setup().kind == MachineKind::Lathe ? "lathe" : "mill"},
                     {"axes", session.setup().reportedAxes()}};
+  // The physical tools, drawn at the tool's place (web/src/tool_shape.js).
+  out["tools"] = viewerTools(session.setup());
   // The final stock (web/src/stock.js draws it); its analysis is state["stock"].
   if (!r.viewerStock.is_null()) out["stock"] = std::move(r.viewerStock);
 }

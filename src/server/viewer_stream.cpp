@@ -41,7 +41,8 @@ ViewerStream::ViewerStream(const SourceFiles& files, const Setup& setup, uint64_
       axes_(setup.reportedAxes()),
       out_(std::move(out)),
       batchEvents_(batchEvents),
-      diff_(setup, true) {
+      diff_(setup, true),
+      unitsPerMm_(setup.initialUnit == InputUnit::Inch ? 1 / 25.4 : 1.0) {
   noteFile_ = ::open_memstream(&noteMem_, &noteSize_);
   if (!noteFile_) throw std::runtime_error("no memory for the viewer stream");
   trace_ = std::make_unique<TraceWriter>(files, noteFile_, maxNoteBytes, axes_);
@@ -50,6 +51,7 @@ ViewerStream::ViewerStream(const SourceFiles& files, const Setup& setup, uint64_
       dump({{"format", "ncvm-viewer"},
             {"version", 1},
             {"axes", axes_},
+            {"frame", setup.stock.frame},
             {"machine",
              {{"kind", setup.kind == MachineKind::Lathe ? "lathe" : "mill"}, {"axes", axes_}}}})));
 }
@@ -162,7 +164,17 @@ void ViewerStream::onSkip(const SkipEvent& e) {
   note(EventKind::Skip, e.at, 0, false, [&](TraceWriter& t) { t.onSkip(e); });
 }
 
+void ViewerStream::onWorkOrigin(const WorkOriginEvent& e) {
+  origins_.push_back(nlohmann::json::array(
+      {events_, e.mm[0] * unitsPerMm_, e.mm[1] * unitsPerMm_, e.mm[2] * unitsPerMm_}));
+}
+
 void ViewerStream::flushBatch() {
+  if (kind_.empty() && origins_.empty()) return;
+  if (!origins_.empty()) {
+    out_(frame(FrameKind::Origins, dump({{"origins", origins_}})));
+    origins_ = nlohmann::json::array();
+  }
   if (kind_.empty()) return;
   std::string p;
   const uint32_t counts[kBatchHeader] = {

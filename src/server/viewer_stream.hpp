@@ -13,6 +13,10 @@
 //   kind 3  notes: the trace lines (docs/trace-format.md) of the events that are not moves
 //   kind 4  end: JSON, the rest of the answer (state, check, printed, machine, stock, files)
 //           or {"ok": false, "error"}; always the last frame
+//   kind 5  origins: JSON {"origins": [[event, x, y, z], ...]}: where work zero is on the
+//           machine (work offset, EXT, G52, G92/G50; no tool offset) from that event on, in
+//           the setup's units, X a radius; sent before the events frame of its batch, so the
+//           page can draw the path fixed on the machine as the stock is (stock.frame)
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -32,7 +36,14 @@ class TraceWriter;
 
 namespace ncvm::server {
 
-enum class FrameKind : uint32_t { Hello = 0, Events = 1, Steps = 2, Notes = 3, End = 4 };
+enum class FrameKind : uint32_t {
+  Hello = 0,
+  Events = 1,
+  Steps = 2,
+  Notes = 3,
+  End = 4,
+  Origins = 5
+};
 
 // Event kinds of the `kind` column: 0-3 are moves (MoveMode), the others one per event type.
 enum class EventKind : uint8_t {
@@ -94,6 +105,7 @@ class ViewerStream final : public EventSink {
   void onAux(const AuxEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
+  void onWorkOrigin(const WorkOriginEvent& e) override;
 
  private:
   // A non-move event: its trace line (into notes), then its columns.
@@ -125,6 +137,8 @@ class ViewerStream final : public EventSink {
   std::vector<int32_t> n_;
   std::vector<uint16_t> file_, pathCount_;
   std::vector<uint8_t> kind_, flags_, plane_;
+  const double unitsPerMm_;  // the setup's units, as the stock frame counts them
+  nlohmann::json origins_ = nlohmann::json::array();
   nlohmann::json steps_ = nlohmann::json::array();
   nlohmann::json notes_ = nlohmann::json::array();
 };

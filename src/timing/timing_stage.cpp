@@ -427,8 +427,12 @@ void TimingStage::commit(const Run& run) {
     MoveEvent& e = events_[i];
     e.time = time;
     next_->onMove(e);
-    for (; sp < after_.size() && after_[sp].seq == heldBase_ + i; ++sp)
-      next_->onSpindle(after_[sp].e);
+    for (; sp < after_.size() && after_[sp].seq == heldBase_ + i; ++sp) {
+      if (const auto* rpm = std::get_if<SpindleEvent>(&after_[sp].e))
+        next_->onSpindle(*rpm);
+      else
+        next_->onWorkOrigin(std::get<WorkOriginEvent>(after_[sp].e));
+    }
   }
   // The run's blocks are all cutting moves of the current operation: one sum for them.
   report_.addCutting(model, simple, length, count);
@@ -575,6 +579,16 @@ void TimingStage::onComment(const CommentEvent& e) {
     return;
   }
   marks_.push_back(Mark{heldBase_ + held_.size(), e.at, std::string(e.text)});
+}
+
+// Work zero moved: no stop (the time model does not change), but the sinks after the stage
+// (the web viewer, which draws the path fixed on the machine) get it after the moves before it.
+void TimingStage::onWorkOrigin(const WorkOriginEvent& e) {
+  if (!next_) return;
+  if (!held_.empty())
+    after_.push_back(After{heldBase_ + held_.size() - 1, e});
+  else
+    next_->onWorkOrigin(e);
 }
 
 void TimingStage::onSkip(const SkipEvent& e) {

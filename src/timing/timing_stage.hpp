@@ -13,6 +13,7 @@
 // processing time, exact stop (G09, G61); dwell in seconds or revolutions; M, S and T
 // function times, the spindle ramps and G96 following X with the spindle acceleration.
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -50,6 +51,7 @@ class TimingStage final : public EventSink {
   void onSkip(const SkipEvent& e) override;
   void onSignal(const SignalEvent& e) override;
   void onComment(const CommentEvent& e) override;
+  void onWorkOrigin(const WorkOriginEvent& e) override;
 
  private:
   // A held cutting block: what the planner and the report need (mm, s), about 100 bytes (the
@@ -65,10 +67,12 @@ class TimingStage final : public EventSink {
     double timeSimple = 0;   // length / feed
     bool stopAfter = false;  // exact stop at the end
   };
-  // A G96 rpm event the control sent after the held move number seq (heldBase_ counts).
+  // An event the control sent after the held move number seq (heldBase_ counts) that does
+  // not stop the look-ahead: a G96 rpm, or where work zero now is (a macro writing #5221,
+  // G10, G92 between cutting moves); forwarded right after that move, in order.
   struct After {
     size_t seq = 0;
-    SpindleEvent e;
+    std::variant<SpindleEvent, WorkOriginEvent> e;
   };
   // A comment that starts an operation before the held move number seq: the moves before it
   // belong to the operation before (the comment does not stop the look-ahead).

@@ -342,6 +342,33 @@ TEST_F(ServerTest, RunsWithTheProgramsFolderAsLibrary) {
   EXPECT_EQ(j["state"]["moves"], 2);  // O2000 was found in the folder
 }
 
+// A program of the server's folders sent without a setup runs with its own setup, by the rule
+// of `ncvm list` (a variant NAME-VARIANT.nc with NAME.toml), by path and as edited text; a
+// setup sent wins, and an empty one is the default machine.
+TEST_F(ServerTest, AProgramWithoutASetupRunsWithItsOwn) {
+  write(root.path / "parts" / "cut-x150.nc", "O0003\nG90 G54 G00 X1.\nM30\n");
+  write(root.path / "parts" / "cut.toml", "[work_offsets]\nG54 = [10.0, 0.0, 0.0]\n");
+  auto machineX = [&](const json& body) {
+    auto r = post(body.dump());
+    EXPECT_TRUE(r);
+    if (!r) return -1.0;
+    EXPECT_EQ(r->status, 200) << r->body;
+    json j = json::parse(r->body);
+    return j["state"]["position"]["machine"][0].get<double>();
+  };
+  EXPECT_DOUBLE_EQ(machineX({{"root", "root"}, {"path", "parts/cut-x150.nc"}}), 11.0);
+  EXPECT_DOUBLE_EQ(machineX({{"program", "O0003\nG90 G54 G00 X1.\nM30\n"},
+                             {"name", "cut-x150.nc"},
+                             {"root", "root"},
+                             {"dir", "parts"}}),
+                   11.0);
+  EXPECT_DOUBLE_EQ(
+      machineX({{"root", "root"}, {"path", "parts/cut-x150.nc"}, {"setup", "[machine]\n"}}), 1.0);
+  // Not a program of a folder: the default machine.
+  EXPECT_DOUBLE_EQ(
+      machineX({{"program", "O0003\nG90 G54 G00 X1.\nM30\n"}, {"name", "cut-x150.nc"}}), 1.0);
+}
+
 // Issue 26 item 7: parts/link.nc, a symlink to a file outside the roots, was loaded as a
 // library program, so M98 P9999 ran it (its text showed in the answer) while /api/file
 // refused it; and answers named files by the server's absolute paths.
@@ -820,6 +847,76 @@ TEST(ViewerStream, FramesCarryEveryEventAsColumns) {
   EXPECT_EQ(setAt, (std::vector<int>{5, 6}));
   EXPECT_EQ(countLines(noteText), notes.size());
   for (uint64_t i : notes) EXPECT_GT(c.kind[i], 3) << "a note is not a move";
+}
+
+// Where work zero is on the machine, before the events frame of its batch: the page draws
+// the path fixed on the machine. A switch to G55 after two cutting moves that the time
+// model still holds in its look-ahead comes after them (the timing stage keeps the order).
+TEST(ViewerStream, WorkZeroMovesAreSentInOrderWithTheMoves) {
+  const std::string program =
+      "O0001\nG21 G90 G17 G54\nG00 X0 Y0 Z0\nG01 X10. F600.\nY10.\nG55\nG01 X5.\n"
+      "G10 L2 P2 X20.\nG01 X6.\nM30\n";
+  const std::string setup =
+      "[timing]\nmodel = \"dynamic\"\n[work_offsets]\nG54 = [1.0, 2.0, 3.0]\nG55 = [5.0, 6.0, "
+      "7.0]\n";
+  std::vector<Frame> frames =
+      framesOf(binaryRun({{"program", program}, {"name", "p.nc"}, {"setup", setup}}));
+  EXPECT_EQ(json::parse(frames.front().payload)["frame"], "work");
+  json origins = json::array();
+  bool eventsSeen = false;
+  for (const auto& f : frames) {
+    eventsSeen = eventsSeen || f.kind == static_cast<uint32_t>(FrameKind::Events);
+    if (f.kind != static_cast<uint32_t>(FrameKind::Origins)) continue;
+    EXPECT_FALSE(eventsSeen) << "origins come before the events of their batch";
+    json o = json::parse(f.payload);
+    for (const auto& each : o["origins"]) origins.push_back(each);
+  }
+  Columns c = columnsOf(frames);
+  std::vector<size_t> moves;  // event index of each move
+  for (size_t i = 0; i < c.kind.size(); ++i)
+    if (c.kind[i] <= 3) moves.push_back(i);
+  ASSERT_EQ(moves.size(), 5u);
+  ASSERT_EQ(origins.size(), 3u) << origins.dump();
+  EXPECT_EQ(origins[0], json::array({0, 1.0, 2.0, 3.0}));
+  EXPECT_EQ(origins[1], json::array({moves[3], 5.0, 6.0, 7.0})) << "from G01 X5. on";
+  EXPECT_GT(origins[2][0].get<size_t>(), moves[3]);
+  EXPECT_LE(origins[2][0].get<size_t>(), moves[4]);
+  EXPECT_EQ(origins[2][1], 20.0);
+}
+
+// The physical tools for the page to draw: a ball mill's profile rises to its radius at its
+// rim, a face mill is short, a probe is its ball, a tool without a diameter is left out; a
+// lathe insert is its outline on the side its tip direction gives.
+TEST(ViewerTools, TheSetupsToolsAsTheSimulationShapesThem) {
+  json j = runJob({{"program", "O1\nM30\n"},
+                   {"setup",
+                    "[tools.1]\ntype = \"ball\"\ndiameter = 10.0\n[tools.2]\ntype = \"face\"\n"
+                    "diameter = 50.0\n[tools.3]\ntype = \"probe\"\ndiameter = 4.0\n"
+                    "[tools.4]\ntype = \"flat\"\n"}});
+  ASSERT_TRUE(j["ok"].get<bool>()) << j.dump();
+  const json& t = j["tools"];
+  EXPECT_EQ(t["1"]["profile"].front(), json::array({0.0, 0.0}));
+  EXPECT_EQ(t["1"]["profile"].back(), json::array({5.0, 5.0}));
+  EXPECT_DOUBLE_EQ(t["2"]["length"].get<double>(), 17.5);
+  EXPECT_EQ(t["3"], json({{"type", "probe"}, {"diameter", 4.0}}));
+  EXPECT_FALSE(t.contains("4"));
+  json lathe = runJob({{"program", "O1\nM30\n"},
+                       {"setup",
+                        "[machine]\nkind = \"lathe\"\n[tools.1]\ntype = \"insert\"\n"
+                        "nose_radius = 0.8\ntip = 3\n"}});
+  ASSERT_TRUE(lathe["ok"].get<bool>()) << lathe.dump();
+  const json& outline = lathe["tools"]["1"]["outline"];
+  ASSERT_GT(outline.size(), 3u);
+  double rmin = 1e9, zmin = 1e9, rmax = -1e9;
+  for (const auto& p : outline) {
+    rmin = std::min(rmin, p[0].get<double>());
+    zmin = std::min(zmin, p[1].get<double>());
+    rmax = std::max(rmax, p[0].get<double>());
+  }
+  // Tip 3: the imaginary tip is the outline's lower left corner, the insert above and right.
+  EXPECT_NEAR(rmin, 0.0, 0.01);
+  EXPECT_NEAR(zmin, 0.0, 0.01);
+  EXPECT_GT(rmax, 5.0);
 }
 
 TEST(ViewerStream, AFailureIsAnEndFrame) {

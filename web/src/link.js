@@ -4,6 +4,7 @@
 // change of how moves are stored touches these two functions only.
 import * as THREE from 'three';
 import { movePointsAt } from './model.js';
+import { drawnPoint } from './machine_frame.js';
 
 // The program line of move i when it is in `file` (the editor's program), else 0.
 export function moveLine(model, i, file) {
@@ -11,9 +12,9 @@ export function moveLine(model, i, file) {
   return !file || model.answer.files?.[model.file[e]] === file ? model.line[e] : 0;
 }
 
-// The points of move i (work coordinates, a polyline).
+// The points of move i as drawn (work coordinates fixed on the machine, machine_frame.js).
 export function movePoints(model, i) {
-  return movePointsAt(model, i);
+  return movePointsAt(model, i).map((p) => drawnPoint(model, i, p));
 }
 
 // line -> moves: the moves of each line of `file`, as index ranges into one Int32Array
@@ -58,8 +59,8 @@ export class PathLink {
     let down = null;
     canvas.addEventListener('pointerdown', (e) => (down = { x: e.clientX, y: e.clientY }));
     canvas.addEventListener('pointerup', (e) => {
-      // A click, not the end of an orbit or a pan.
-      if (down && Math.hypot(e.clientX - down.x, e.clientY - down.y) < 4) this.pickAt(e.clientX, e.clientY);
+      // A click, not the end of an orbit or a pan; while measuring, the clicks are the measure's.
+      if (down && !view.measuring && Math.hypot(e.clientX - down.x, e.clientY - down.y) < 4) this.pickAt(e.clientX, e.clientY);
       down = null;
     });
   }

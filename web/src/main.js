@@ -10,6 +10,10 @@ import { PathLink } from './link.js';
 import { initTheme, themeGrid } from './theme.js';
 import { recordRun } from './counters.js';
 import { Playback } from './playback.js';
+import { ColourBy } from './colour_by.js';
+import { Measure } from './measure.js';
+import { drawnTool } from './machine_frame.js';
+import { ToolShapes } from './tool_shape.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -18,6 +22,9 @@ const SUB = 10; // slider positions per event: scrubbing shows a move part-way
 const editor = new Editor($('editor'));
 const view = new View3D($('view'));
 const progress = new RunProgress($('view'));
+const colourBy = new ColourBy(view, document.querySelector('.legend'));
+const measure = new Measure(view, $('measure'), $('measure-panel'));
+const toolShapes = new ToolShapes(view);
 initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
@@ -65,7 +72,7 @@ async function openFile(root, path) {
   if (!f.ok) return setStatus(f.error, 'bad');
   editor.text = f.text;
   $('setup-text').value = f.setup || '';
-  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text };
+  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text, setup: f.setup || '' };
   $('files').value = `${root}|${path}`;
   workspace.opened(sourceKey());
   setStatus(`${path}${f.setup_path ? ` (setup ${f.setup_path})` : ''}`);
@@ -129,7 +136,11 @@ async function run() {
   const unchanged = ui.source.kind === 'server' && ui.source.text === text;
   if (unchanged) Object.assign(req, { root: ui.source.root, path: ui.source.path });
   else req.program = text;
-  if ($('setup-text').value.trim()) req.setup = $('setup-text').value;
+  // The setup tab's text when it is one of the user's; a program of the server's folders with
+  // its own setup as it came (or none) runs with the setup the server pairs with it, by the rule
+  // of `ncvm list` (docs/setup-format.md).
+  const setup = $('setup-text').value;
+  if (setup.trim() && !(ui.source.kind === 'server' && setup === ui.source.setup)) req.setup = setup;
   if (ui.source.root && !unchanged) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
   progress.set('running');
   const lines = editor.lineCount || 0;
@@ -153,6 +164,9 @@ async function run() {
   for (const w of [...answer.check.warnings, ...s.warnings]) if (mine(w.file)) marks.push({ line: w.line, kind: 'warning', text: `${w.code} ${w.text}` });
   editor.setMarks(marks);
   view.setModel(model);
+  colourBy.setModel(model);
+  measure.setModel(model);
+  toolShapes.setModel(model);
   themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
@@ -182,7 +196,8 @@ function goTo(pos) {
   const p = ui.p / SUB;
   const tool = toolAt(m, p);
   const done = Math.floor(p);
-  view.setProgress(verticesDone(m, done), tool.work);
+  toolShapes.update(tool.index);
+  view.setProgress(verticesDone(m, done), drawnTool(m, tool));
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
   const state = stateAt(m, idx);

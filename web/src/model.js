@@ -5,6 +5,7 @@
 // buffer). The control's state at an event is folded from sparse deltas on demand, from
 // checkpoints, so that nothing is rebuilt per scrub or step.
 import { KIND, FLAG, KIND_NAMES, MODE_NAMES, decodeBatch, json, lines } from './wire.js';
+import { fixOnMachine } from './machine_frame.js';
 
 const AXES = ['X', 'Y', 'Z', 'A', 'B', 'C'];
 export const COLORS = { rapid: [0xff, 0x55, 0x33], feed: [0x33, 0xcc, 0xff], comp: [0xdd, 0x55, 0xff], thread: [0xff, 0xdd, 0x33] };
@@ -103,6 +104,8 @@ export class ModelBuilder {
     this.lastEnd = null;
     this.maxLine = 0;
     this.tail = null;
+    this.origins = []; // [event, x, y, z]: where work zero is on the machine (machine_frame.js)
+    this.frame = 'work';
   }
 
   // One frame of wire.js: {kind, payload}.
@@ -111,6 +114,7 @@ export class ModelBuilder {
       const h = json(frame.payload);
       this.axes = h.axes;
       this.lathe = h.machine?.kind === 'lathe';
+      this.frame = h.frame || 'work';
     } else if (frame.kind === 1) this.batch(decodeBatch(frame.payload));
     else if (frame.kind === 2) {
       const s = json(frame.payload);
@@ -118,6 +122,7 @@ export class ModelBuilder {
       for (const i of s.notes) this.noteEvents.push(i);
     } else if (frame.kind === 3) for (const l of lines(frame.payload)) this.noteLines.push(l);
     else if (frame.kind === 4) this.tail = json(frame.payload);
+    else if (frame.kind === 5) for (const o of json(frame.payload).origins) this.origins.push(o);
   }
 
   scene(p, out) {
@@ -193,7 +198,13 @@ export class ModelBuilder {
     const notes = {};
     this.noteEvents.forEach((i, k) => (notes[i] = this.noteLines[k]));
     const g = (x) => x.done();
-    const box = this.min[0] <= this.max[0] ? { min: this.min, max: this.max } : null;
+    // The path drawn fixed on the machine when the program moved work zero.
+    const V = this.vertices, ev = this.mEvent, kinds = this.kind;
+    const fixed = fixOnMachine({
+      origins: this.origins, frame: this.frame, lathe: this.lathe, moves: this.m, mEvent: ev.a, kind: kinds.a,
+      vFirst: this.vFirst.a, vertices: V.a, vertexCount: V.n / 3,
+    });
+    const box = fixed.bounds || (this.min[0] <= this.max[0] ? { min: this.min, max: this.max } : null);
     return {
       answer: this.tail || { ok: false, error: 'the answer ended early (no end frame)' },
       lathe: this.lathe, axes: A, axisNames: AXES.slice(0, A), n: this.n, moves: this.m,
@@ -202,7 +213,7 @@ export class ModelBuilder {
       start: g(this.start), end: g(this.end), mend: g(this.mend), feed: g(this.feed), mEvent: g(this.mEvent),
       vFirst: g(this.vFirst), arcOf: g(this.arcOf), center: g(this.center), plane: g(this.plane),
       pathFirst: g(this.pathFirst), path: g(this.path), posEvent: g(this.posEvent), pos: g(this.pos),
-      vertices: g(this.vertices), colors: g(this.colors), bounds: box,
+      vertices: g(this.vertices), colors: g(this.colors), bounds: box, shiftFrom: fixed.shiftFrom, shiftBy: fixed.shiftBy,
       stepEvent: Int32Array.from(steps.map((s) => s[0])), stepDelta: steps.map((s) => s[1]), checkpoints,
       notes, blockLast: blockEnds(this),
     };

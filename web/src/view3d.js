@@ -140,6 +140,15 @@ export class View3D {
     this.draw();
   }
 
+  // A new colour for every vertex of the path (colour_by.js): one upload, the draw ranges kept.
+  setPathColours(rgb) {
+    if (!this.model) return;
+    const color = this.paths[true].geometry.getAttribute('color');
+    color.array.set(rgb);
+    color.needsUpdate = true;
+    this.draw();
+  }
+
   setView(name) {
     const b = this.bounds, c = b.getCenter(new THREE.Vector3());
     // Far enough for the bounding sphere to fit the narrower of the two fields of view: a

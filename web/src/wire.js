@@ -2,7 +2,7 @@
 // frames, each `u32 kind, u32 length, payload, zero bytes to a multiple of 8`. FrameReader
 // cuts the stream into frames as its chunks arrive; decodeBatch turns an events payload
 // into typed arrays (views on a copy of the payload, aligned as the server wrote them).
-export const FRAME = { hello: 0, events: 1, steps: 2, notes: 3, end: 4 };
+export const FRAME = { hello: 0, events: 1, steps: 2, notes: 3, end: 4, origins: 5 };
 export const KIND = { rapid: 0, linear: 1, cw: 2, ccw: 3, dwell: 8, message: 9, alarm: 10, tool: 11, spindle: 12, coolant: 13, aux: 14, offset: 15, skip: 16 };
 export const FLAG = { thread: 1, compensated: 2, probe: 4, ownStart: 8, ownPositions: 16, arc: 32 };
 export const KIND_NAMES = { 0: 'move', 1: 'move', 2: 'move', 3: 'move', 8: 'dwell', 9: 'message', 10: 'alarm', 11: 'tool', 12: 'spindle', 13: 'coolant', 14: 'aux', 15: 'offset', 16: 'skip' };
