@@ -133,7 +133,7 @@ async function run() {
   if (ui.source.root && !unchanged) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
   progress.set('running');
   const lines = editor.lineCount || 0;
-  const result = await api.run(req, (p) => progress.update(p, lines));
+  const result = await api.run(req, (p) => progress.update(p, lines), lines);
   $('run').disabled = false;
   if (!result.ok) {
     progress.set('alarm');
