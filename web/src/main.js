@@ -182,7 +182,7 @@ function goTo(pos) {
   const p = ui.p / SUB;
   const tool = toolAt(m, p);
   const done = Math.floor(p);
-  view.setProgress(verticesDone(m, done), tool.work);
+  view.setProgress(verticesDone(m, done), tool.work, done);
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
   const state = stateAt(m, idx);

@@ -97,7 +97,7 @@ export class ModelBuilder {
       start: G(Float64Array, 3), end: G(Float64Array, 3), mend: G(Float64Array, 3), feed: G(Float32Array), mEvent: G(Uint32Array),
       vFirst: G(Uint32Array), arcOf: G(Int32Array), center: new Grow(Float64Array), plane: new Grow(Uint8Array),
       pathFirst: G(Uint32Array), path: new Grow(Float64Array), posEvent: new Grow(Int32Array), pos: new Grow(Float64Array),
-      vertices: G(Float32Array, 6), colors: G(Uint8Array, 6),
+      vertices: G(Float32Array, 6), colors: G(Uint8Array, 6), vertexEvent: G(Float32Array, 2),
     });
     this.pathFirst.push(0);
     this.min = [Infinity, Infinity, Infinity];
@@ -124,12 +124,12 @@ export class ModelBuilder {
     else if (frame.kind === 4) this.tail = json(frame.payload);
   }
 
-  // Appends the segment from point p (at offset i) to point q (at offset j) to the vertex
-  // and colour buffers, work coordinates -> scene: a lathe's (X diameter, Z) become
+  // Appends the segment from point p (at offset i) to point q (at offset j) to the vertex,
+  // colour and event buffers, work coordinates -> scene: a lathe's (X diameter, Z) become
   // (Z, 0, X/2). The buffers have room (batch() makes it); each store site sees one array type.
-  segment(p, i, q, j, col) {
-    const V = this.vertices, C = this.colors;
-    const va = V.a, ca = C.a, lo = this.min, hi = this.max;
+  segment(p, i, q, j, col, ev) {
+    const V = this.vertices, C = this.colors, E = this.vertexEvent;
+    const va = V.a, ca = C.a, ea = E.a, lo = this.min, hi = this.max;
     let vn = V.n;
     for (let k = 0; k < 2; k++) {
       const a = k ? q : p, o = k ? j : i;
@@ -144,7 +144,8 @@ export class ModelBuilder {
       if (y > hi[1]) hi[1] = y;
       if (z > hi[2]) hi[2] = z;
     }
-    V.n = vn, C.n = vn;
+    ea[E.n] = ev, ea[E.n + 1] = ev;
+    V.n = vn, C.n = vn, E.n += 2;
   }
 
   // One events frame. The columns the server sends are appended whole; the per-move columns
@@ -162,8 +163,8 @@ export class ModelBuilder {
     this.start.room(m * A), this.lastMove.room(n), this.vEnd.room(n);
     const start = this.start.a, end = this.end.a, mEvent = this.mEvent.a, vFirst = this.vFirst.a, arcOf = this.arcOf.a;
     const pathFirst = this.pathFirst.a, lastMove = this.lastMove.a, vEnd = this.vEnd.a;
-    const V = this.vertices, C = this.colors;
-    V.room(m * 6), C.room(m * 6); // a segment a move; arcs and dog-legs ask for more
+    const V = this.vertices, C = this.colors, E = this.vertexEvent;
+    V.room(m * 6), C.room(m * 6), E.room(m * 2); // a segment a move; arcs and dog-legs ask for more
     let mi = 0, si = 0, pi = 0, arcs = this.plane.n - b.plane.length, paths = this.path.n / A - b.path.length / A;
     for (let i = 0; i < n; i++) {
       const k = b.kind[i], f = b.flags[i], ev = e0 + i;
@@ -182,11 +183,11 @@ export class ModelBuilder {
           arcOf[mv] = arcs++;
         } else arcOf[mv] = -1;
         if (!(f & FLAG.arc) && corners === 0) {
-          this.segment(start, mv * A, end, mv * A, col);
+          this.segment(start, mv * A, end, mv * A, col, ev);
         } else {
           const pts = pointsOf(this.moveRecord(mv), this.lathe);
-          V.room((m - mi + pts.length) * 6), C.room((m - mi + pts.length) * 6);
-          for (let j = 1; j < pts.length; j++) this.segment(pts[j - 1], 0, pts[j], 0, col);
+          V.room((m - mi + pts.length) * 6), C.room((m - mi + pts.length) * 6), E.room((m - mi + pts.length) * 2);
+          for (let j = 1; j < pts.length; j++) this.segment(pts[j - 1], 0, pts[j], 0, col, ev);
         }
         lastMove[ev] = mv;
         mi++;
@@ -237,7 +238,7 @@ export class ModelBuilder {
       start: g(this.start), end: g(this.end), mend: g(this.mend), feed: g(this.feed), mEvent: g(this.mEvent),
       vFirst: g(this.vFirst), arcOf: g(this.arcOf), center: g(this.center), plane: g(this.plane),
       pathFirst: g(this.pathFirst), path: g(this.path), posEvent: g(this.posEvent), pos: g(this.pos),
-      vertices: g(this.vertices), colors: g(this.colors), bounds: box,
+      vertices: g(this.vertices), colors: g(this.colors), vertexEvent: g(this.vertexEvent), bounds: box,
       stepEvent: Int32Array.from(steps.map((s) => s[0])), stepDelta: steps.map((s) => s[1]), checkpoints,
       notes, blockLast: blockEnds(this),
     };
