@@ -57,12 +57,15 @@ export class View3D {
     return g;
   }
 
-  // Frees the GPU buffers of everything in the group (the last run's path, grid, stock) and
-  // of the path layer.
+  // Frees the GPU buffers of everything in the group (the last run's path, grid, stock, the
+  // axes and their label textures) and of the path layer.
   disposeGroup() {
     this.group.traverse((o) => {
       o.geometry?.dispose();
-      for (const mat of [].concat(o.material || [])) mat.dispose();
+      for (const mat of [].concat(o.material || [])) {
+        for (const v of Object.values(mat)) if (v?.isTexture) v.dispose();
+        mat.dispose();
+      }
     });
     this.group.clear();
     this.layer?.dispose();
