@@ -19,11 +19,12 @@ export const files = () => call('api/files');
 export const file = (root, path) => call(`api/file?root=${encodeURIComponent(root)}&path=${encodeURIComponent(path)}`);
 
 // Runs `req` ({program, name, setup, root, dir} or, for a file of the server's folders
-// unchanged, {root, path, setup}); onProgress({events, bytes, line}) while it streams.
+// unchanged, {root, path, setup}); onProgress({events, bytes, line}) while it streams;
+// expect: the events to make room for at once (the program's line count).
 // Resolves to {ok: true, model} or {ok: false, error}. One worker per run: a new run
 // cancels the last one.
 let current = null;
-export function run(req, onProgress = () => {}) {
+export function run(req, onProgress = () => {}, expect = 0) {
   current?.terminate();
   const worker = new Worker(new URL('./run.worker.js', import.meta.url), { type: 'module' });
   current = worker;
@@ -40,6 +41,6 @@ export function run(req, onProgress = () => {}) {
       else if (d.type === 'done') end(d.model.answer.ok ? { ok: true, model: withViews(d.model) } : { ok: false, error: d.model.answer.error });
     };
     worker.onerror = (e) => end({ ok: false, error: `the run worker failed: ${e.message}` });
-    worker.postMessage({ url: new URL('api/run.bin', location.href).href, request: req });
+    worker.postMessage({ url: new URL('api/run.bin', location.href).href, request: req, expect });
   });
 }

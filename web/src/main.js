@@ -144,7 +144,7 @@ async function run() {
   if (ui.source.root && !unchanged) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
   progress.set('running');
   const lines = editor.lineCount || 0;
-  const result = await api.run(req, (p) => progress.update(p, lines));
+  const result = await api.run(req, (p) => progress.update(p, lines), lines);
   $('run').disabled = false;
   if (!result.ok) {
     progress.set('alarm');
@@ -197,10 +197,11 @@ function goTo(pos) {
   const tool = toolAt(m, p);
   const done = Math.floor(p);
   toolShapes.update(tool.index);
-  view.setProgress(verticesDone(m, done), drawnTool(m, tool));
+  view.setProgress(verticesDone(m, done), drawnTool(m, tool), done);
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
   const state = stateAt(m, idx);
+  tool.event = ev; // the position page's actual feed is that of the move in progress
   renderPosition($('p-position'), m, tool, state || stateAt(m, 0));
   renderVariables($('p-vars'), state, ui.shown);
   ui.shown = state;

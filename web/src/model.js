@@ -11,7 +11,9 @@ const AXES = ['X', 'Y', 'Z', 'A', 'B', 'C'];
 export const COLORS = { rapid: [0xff, 0x55, 0x33], feed: [0x33, 0xcc, 0xff], comp: [0xdd, 0x55, 0xff], thread: [0xff, 0xdd, 0x33] };
 const CHECKPOINT = 64; // steps between full states
 
-// A typed array that grows by doubling.
+// A typed array that grows by doubling. done() hands out a view of its buffer, not a copy:
+// a copy of a million-move timeline took a second, while the unused tail of a buffer was
+// never written and so takes no memory.
 class Grow {
   constructor(Type, cap = 1024) {
     this.Type = Type;
@@ -36,7 +38,7 @@ class Grow {
     this.n += arr.length;
   }
   done() {
-    return this.a.slice(0, this.n);
+    return this.a.subarray(0, this.n);
   }
 }
 
@@ -79,21 +81,24 @@ function pointsOf(mv, lathe) {
 const colorOf = (kind, flags) =>
   kind === KIND.rapid ? COLORS.rapid : flags & FLAG.thread ? COLORS.thread : flags & FLAG.compensated ? COLORS.comp : COLORS.feed;
 
-// Takes the frames of one run in order; model() returns the timeline.
+// Takes the frames of one run in order; model() returns the timeline. `expect`: the number
+// of events to make room for at once (the program's line count: CAM code is a move a line),
+// as growing a buffer of hundreds of MB by doubling cost seconds in copies and fresh pages.
 export class ModelBuilder {
-  constructor() {
+  constructor(expect = 0) {
     this.axes = 3;
     this.lathe = false;
     this.n = 0;
     this.m = 0;
-    const G = (T) => new Grow(T);
+    const cap = Math.max(1024, Math.min(expect + 64, 1 << 26));
+    const G = (T, k = 1) => new Grow(T, cap * k);
     Object.assign(this, {
       kind: G(Uint8Array), flags: G(Uint8Array), line: G(Uint32Array), block: G(Uint32Array), nnum: G(Int32Array),
       file: G(Uint16Array), time: G(Float64Array), dt: G(Float64Array), lastMove: G(Int32Array), vEnd: G(Uint32Array),
-      start: G(Float64Array), end: G(Float64Array), mend: G(Float64Array), feed: G(Float32Array), mEvent: G(Uint32Array),
-      vFirst: G(Uint32Array), arcOf: G(Int32Array), center: G(Float64Array), plane: G(Uint8Array),
-      pathFirst: G(Uint32Array), path: G(Float64Array), posEvent: G(Int32Array), pos: G(Float64Array),
-      vertices: new Grow(Float32Array, 1 << 16), colors: new Grow(Uint8Array, 1 << 16),
+      start: G(Float64Array, 3), end: G(Float64Array, 3), mend: G(Float64Array, 3), feed: G(Float32Array), mEvent: G(Uint32Array),
+      vFirst: G(Uint32Array), arcOf: G(Int32Array), center: new Grow(Float64Array), plane: new Grow(Uint8Array),
+      pathFirst: G(Uint32Array), path: new Grow(Float64Array), posEvent: new Grow(Int32Array), pos: new Grow(Float64Array),
+      vertices: G(Float32Array, 6), colors: G(Uint8Array, 6), vertexEvent: G(Float32Array, 2),
     });
     this.pathFirst.push(0);
     this.min = [Infinity, Infinity, Infinity];
@@ -101,7 +106,6 @@ export class ModelBuilder {
     this.steps = []; // [event, delta]
     this.noteEvents = [];
     this.noteLines = [];
-    this.lastEnd = null;
     this.maxLine = 0;
     this.tail = null;
     this.origins = []; // [event, x, y, z]: where work zero is on the machine (machine_frame.js)
@@ -125,63 +129,95 @@ export class ModelBuilder {
     else if (frame.kind === 5) for (const o of json(frame.payload).origins) this.origins.push(o);
   }
 
-  scene(p, out) {
-    // Work coordinates -> scene: a lathe's (X diameter, Z) become (Z, 0, X/2).
-    const x = this.lathe ? p[2] : p[0], y = this.lathe ? 0 : p[1], z = this.lathe ? p[0] / 2 : p[2];
-    out.push(x), out.push(y), out.push(z);
-    if (x < this.min[0]) this.min[0] = x;
-    if (y < this.min[1]) this.min[1] = y;
-    if (z < this.min[2]) this.min[2] = z;
-    if (x > this.max[0]) this.max[0] = x;
-    if (y > this.max[1]) this.max[1] = y;
-    if (z > this.max[2]) this.max[2] = z;
+  // Appends the segment from point p (at offset i) to point q (at offset j) to the vertex,
+  // colour and event buffers, work coordinates -> scene: a lathe's (X diameter, Z) become
+  // (Z, 0, X/2). The buffers have room (batch() makes it); each store site sees one array type.
+  segment(p, i, q, j, col, ev) {
+    const V = this.vertices, C = this.colors, E = this.vertexEvent;
+    const va = V.a, ca = C.a, ea = E.a, lo = this.min, hi = this.max;
+    let vn = V.n;
+    for (let k = 0; k < 2; k++) {
+      const a = k ? q : p, o = k ? j : i;
+      const x = this.lathe ? a[o + 2] : a[o], y = this.lathe ? 0 : a[o + 1], z = this.lathe ? a[o] / 2 : a[o + 2];
+      va[vn] = x, va[vn + 1] = y, va[vn + 2] = z;
+      ca[vn] = col[0], ca[vn + 1] = col[1], ca[vn + 2] = col[2];
+      vn += 3;
+      if (x < lo[0]) lo[0] = x;
+      if (y < lo[1]) lo[1] = y;
+      if (z < lo[2]) lo[2] = z;
+      if (x > hi[0]) hi[0] = x;
+      if (y > hi[1]) hi[1] = y;
+      if (z > hi[2]) hi[2] = z;
+    }
+    ea[E.n] = ev, ea[E.n + 1] = ev;
+    V.n = vn, C.n = vn, E.n += 2;
   }
 
+  // One events frame. The columns the server sends are appended whole; the per-move columns
+  // and the vertices are written by index into typed arrays made big enough first, as a
+  // push per value (a store site seeing seven kinds of typed array) cost seconds a million
+  // moves.
   batch(b) {
-    const A = b.axes;
+    const A = b.axes, n = b.n, m = b.m;
     this.axes = A;
-    let mi = 0, si = 0, pi = 0, ai = 0, qi = 0;
-    const V = this.vertices, C = this.colors;
-    for (let i = 0; i < b.n; i++) {
-      const k = b.kind[i], f = b.flags[i], ev = this.n + i;
-      this.kind.push(k), this.flags.push(f), this.line.push(b.line[i]), this.block.push(b.block[i]);
-      this.nnum.push(b.nnum[i]), this.file.push(b.file[i]), this.time.push(b.time[i]), this.dt.push(b.dt[i]);
-      if (b.line[i] > this.maxLine) this.maxLine = b.line[i];
+    const e0 = this.n, m0 = this.m;
+    for (const k of ['kind', 'flags', 'line', 'block', 'nnum', 'file', 'time', 'dt']) this[k].append(b[k]);
+    for (const k of ['end', 'mend', 'feed', 'center', 'plane', 'path']) this[k].append(b[k]);
+    for (let i = 0; i < n; i++) if (b.line[i] > this.maxLine) this.maxLine = b.line[i];
+    for (const k of ['mEvent', 'vFirst', 'arcOf', 'pathFirst']) this[k].room(m);
+    this.start.room(m * A), this.lastMove.room(n), this.vEnd.room(n);
+    const start = this.start.a, end = this.end.a, mEvent = this.mEvent.a, vFirst = this.vFirst.a, arcOf = this.arcOf.a;
+    const pathFirst = this.pathFirst.a, lastMove = this.lastMove.a, vEnd = this.vEnd.a;
+    const V = this.vertices, C = this.colors, E = this.vertexEvent;
+    V.room(m * 6), C.room(m * 6), E.room(m * 2); // a segment a move; arcs and dog-legs ask for more
+    let mi = 0, si = 0, pi = 0, arcs = this.plane.n - b.plane.length, paths = this.path.n / A - b.path.length / A;
+    for (let i = 0; i < n; i++) {
+      const k = b.kind[i], f = b.flags[i], ev = e0 + i;
       if (k <= 3) {
-        const end = Array.from(b.end.subarray(mi * A, mi * A + A));
-        const start = f & FLAG.ownStart ? Array.from(b.start.subarray(si * A, si++ * A + A)) : this.lastEnd || end;
-        const mv = { kind: k, start, end, path: [], center: null, plane: 17 };
-        for (let j = 0; j < b.pathCount[mi]; j++) mv.path.push(Array.from(b.path.subarray((qi + j) * A, (qi + j) * A + A)));
-        qi += b.pathCount[mi];
-        for (const p of mv.path) this.path.append(p);
-        this.pathFirst.push(this.path.n / A);
-        if (f & FLAG.arc) {
-          mv.center = Array.from(b.center.subarray(ai * 3, ai * 3 + 3));
-          mv.plane = b.plane[ai++];
-          this.arcOf.push(this.plane.n);
-          this.center.append(mv.center);
-          this.plane.push(mv.plane);
-        } else this.arcOf.push(-1);
-        this.start.append(start), this.end.append(end), this.mend.append(b.mend.subarray(mi * A, mi * A + A));
-        this.feed.push(b.feed[mi]), this.mEvent.push(ev), this.vFirst.push(V.n / 3);
-        const pts = pointsOf(mv, this.lathe);
+        const mv = m0 + mi;
+        // The start: its own (after a jump of the position) or the last move's end.
+        if (f & FLAG.ownStart) start.set(b.start.subarray(si * A, ++si * A), mv * A);
+        else if (mv > 0) start.set(end.subarray((mv - 1) * A, mv * A), mv * A);
+        else start.set(b.end.subarray(mi * A, mi * A + A), 0);
+        const corners = b.pathCount[mi];
+        paths += corners;
+        pathFirst[mv + 1] = paths; // the first corner of the next move
+        mEvent[mv] = ev, vFirst[mv] = V.n / 3;
         const col = colorOf(k, f);
-        V.room(pts.length * 6), C.room(pts.length * 6);
-        for (let j = 1; j < pts.length; j++) {
-          this.scene(pts[j - 1], V), this.scene(pts[j], V);
-          C.push(col[0]), C.push(col[1]), C.push(col[2]), C.push(col[0]), C.push(col[1]), C.push(col[2]);
+        if (f & FLAG.arc) {
+          arcOf[mv] = arcs++;
+        } else arcOf[mv] = -1;
+        if (!(f & FLAG.arc) && corners === 0) {
+          this.segment(start, mv * A, end, mv * A, col, ev);
+        } else {
+          const pts = pointsOf(this.moveRecord(mv), this.lathe);
+          V.room((m - mi + pts.length) * 6), C.room((m - mi + pts.length) * 6), E.room((m - mi + pts.length) * 2);
+          for (let j = 1; j < pts.length; j++) this.segment(pts[j - 1], 0, pts[j], 0, col, ev);
         }
-        this.lastEnd = end;
-        this.lastMove.push(this.m++);
+        lastMove[ev] = mv;
         mi++;
-      } else this.lastMove.push(this.m - 1);
+      } else lastMove[ev] = m0 + mi - 1;
       if (f & FLAG.ownPositions) {
         this.posEvent.push(ev);
         this.pos.append(b.pos.subarray(pi * 3 * A, ++pi * 3 * A));
       }
-      this.vEnd.push(V.n / 3);
+      vEnd[ev] = V.n / 3;
     }
-    this.n += b.n;
+    for (const k of ['start', 'mEvent', 'vFirst', 'arcOf']) this[k].n += k === 'start' ? m * A : m;
+    this.pathFirst.n += m, this.lastMove.n += n, this.vEnd.n += n;
+    this.n += n;
+    this.m += m;
+  }
+
+  // Move mv (of those built so far) as pointsOf takes it.
+  moveRecord(mv) {
+    const A = this.axes;
+    const sl = (g, j) => Array.from(g.a.subarray(j * A, j * A + A));
+    const rec = { kind: this.kind.a[this.mEvent.a[mv]], start: sl(this.start, mv), end: sl(this.end, mv), path: [], center: null, plane: 17 };
+    for (let j = this.pathFirst.a[mv]; j < this.pathFirst.a[mv + 1]; j++) rec.path.push(sl(this.path, j));
+    const a = this.arcOf.a[mv];
+    if (a >= 0) (rec.center = Array.from(this.center.a.subarray(a * 3, a * 3 + 3))), (rec.plane = this.plane.a[a]);
+    return rec;
   }
 
   // The timeline: plain data (typed arrays, transferable) and the end frame as `answer`.
@@ -213,7 +249,7 @@ export class ModelBuilder {
       start: g(this.start), end: g(this.end), mend: g(this.mend), feed: g(this.feed), mEvent: g(this.mEvent),
       vFirst: g(this.vFirst), arcOf: g(this.arcOf), center: g(this.center), plane: g(this.plane),
       pathFirst: g(this.pathFirst), path: g(this.path), posEvent: g(this.posEvent), pos: g(this.pos),
-      vertices: g(this.vertices), colors: g(this.colors), bounds: box, shiftFrom: fixed.shiftFrom, shiftBy: fixed.shiftBy,
+      vertices: g(this.vertices), colors: g(this.colors), vertexEvent: g(this.vertexEvent), bounds: box, shiftFrom: fixed.shiftFrom, shiftBy: fixed.shiftBy,
       stepEvent: Int32Array.from(steps.map((s) => s[0])), stepDelta: steps.map((s) => s[1]), checkpoints,
       notes, blockLast: blockEnds(this),
     };

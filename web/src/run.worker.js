@@ -8,7 +8,7 @@ import { FrameReader } from './wire.js';
 import { ModelBuilder, transferables } from './model.js';
 
 self.onmessage = async (e) => {
-  const { url, request } = e.data;
+  const { url, request, expect } = e.data;
   try {
     const res = await fetch(url, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(request) });
     if (!res.ok) {
@@ -23,7 +23,7 @@ self.onmessage = async (e) => {
     }
     const reader = res.body.getReader();
     const frames = new FrameReader();
-    const builder = new ModelBuilder();
+    const builder = new ModelBuilder(expect);
     let bytes = 0, last = 0;
     for (;;) {
       const { done, value } = await reader.read();

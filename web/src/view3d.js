@@ -6,6 +6,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { drawStock } from './stock.js';
 import { makeAxes } from './axes.js';
+import { PathLayer } from './path_layer.js';
 
 const BG = 0x15181d;
 
@@ -56,13 +57,21 @@ export class View3D {
     return g;
   }
 
-  // Frees the GPU buffers of everything in the group (the last run's path, grid, stock).
+  // Frees the GPU buffers of everything in the group (the last run's path, grid, stock, the
+  // axes and their label textures) and of the path layer.
   disposeGroup() {
     this.group.traverse((o) => {
       o.geometry?.dispose();
-      for (const mat of [].concat(o.material || [])) mat.dispose();
+      for (const mat of [].concat(o.material || [])) {
+        for (const v of Object.values(mat)) if (v?.isTexture) v.dispose();
+        mat.dispose();
+      }
     });
     this.group.clear();
+    this.layer?.dispose();
+    this.layer = null;
+    this.pathGeometry?.dispose();
+    this.pathGeometry = null;
   }
 
   setModel(model) {
@@ -79,12 +88,20 @@ export class View3D {
     const size = box.getSize(new THREE.Vector3()).length() || 100;
     box.expandByScalar(size * 0.05);
     this.bounds = box;
-    // The whole path is one vertex buffer with a colour per vertex, uploaded once. What is
-    // done is drawn bright, what is to come dim: two draw ranges of the same attributes.
+    // The whole path is one vertex buffer with a colour and an event index per vertex,
+    // uploaded once, drawn as a layer (path_layer.js); else what is done is drawn bright, what
+    // is to come dim: two draw ranges of the same attributes.
     const position = new THREE.BufferAttribute(model.vertices, 3);
     const color = new THREE.BufferAttribute(model.colors, 3, true);
     this.paths = {};
-    for (const done of [true, false]) {
+    if (PathLayer.supported(this.renderer)) {
+      this.pathGeometry = new THREE.BufferGeometry();
+      this.pathGeometry.setAttribute('position', position);
+      this.pathGeometry.setAttribute('color', color);
+      this.pathGeometry.setAttribute('eventIndex', new THREE.BufferAttribute(model.vertexEvent, 1));
+      this.layer = new PathLayer(this.pathGeometry);
+    }
+    for (const done of this.layer ? [] : [true, false]) {
       const geo = new THREE.BufferGeometry();
       geo.setAttribute('position', position);
       geo.setAttribute('color', color);
@@ -131,11 +148,15 @@ export class View3D {
 
   // verticesDone: the vertices of the moves done so far (model.js verticesDone); only the
   // two draw ranges change.
-  setProgress(verticesDone, toolWork) {
+  // eventsDone: the events done (the layer's threshold).
+  setProgress(verticesDone, toolWork, eventsDone) {
     if (!this.model) return;
-    const k = Math.max(0, Math.min(verticesDone, this.vertexCount));
-    this.paths[true].geometry.setDrawRange(0, k);
-    this.paths[false].geometry.setDrawRange(k, this.vertexCount - k);
+    if (this.layer) this.layer.setDone(eventsDone);
+    else {
+      const k = Math.max(0, Math.min(verticesDone, this.vertexCount));
+      this.paths[true].geometry.setDrawRange(0, k);
+      this.paths[false].geometry.setDrawRange(k, this.vertexCount - k);
+    }
     if (toolWork) this.tool.position.copy(this.toScene(toolWork));
     this.draw();
   }
@@ -143,9 +164,11 @@ export class View3D {
   // A new colour for every vertex of the path (colour_by.js): one upload, the draw ranges kept.
   setPathColours(rgb) {
     if (!this.model) return;
-    const color = this.paths[true].geometry.getAttribute('color');
+    // One colour attribute, shared by the layer's geometry or by both draw ranges.
+    const color = (this.layer ? this.pathGeometry : this.paths[true].geometry).getAttribute('color');
     color.array.set(rgb);
     color.needsUpdate = true;
+    if (this.layer) this.layer.dirty = true; // the layer keeps the path drawn for the camera
     this.draw();
   }
 
@@ -183,6 +206,13 @@ export class View3D {
   }
 
   draw() {
-    this.renderer.render(this.scene, this.camera);
+    if (!this.layer) return this.renderer.render(this.scene, this.camera);
+    // The path layer first, then the grid, stock and tool over it.
+    const r = this.renderer;
+    r.clear();
+    this.layer.render(r, this.camera);
+    r.autoClear = false;
+    r.render(this.scene, this.camera);
+    r.autoClear = true;
   }
 }
