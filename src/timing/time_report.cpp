@@ -15,48 +15,75 @@ OperationTime& TimeReport::op() {
   if (ops_.empty()) {
     ops_.emplace_back();
     ops_.back().tool = tool_;
+    cur_ = 0;
   }
-  return ops_.back();
+  return ops_[cur_];
+}
+
+// A place already seen: its operation goes on (true).
+bool TimeReport::enterPlace(const PlaceKey& k) {
+  auto it = places_.find(k);
+  if (it == places_.end()) return false;
+  // Entered again: another operation, or this one after it moved (the next pass of a loop;
+  // its comment and then its tool change are one entry).
+  if (it->second != cur_ || curMoved_) ++ops_[it->second].runs;
+  cur_ = it->second;
+  curMoved_ = false;
+  return true;
+}
+
+void TimeReport::startOperation(int tool, const EventOrigin& at, const PlaceKey& k) {
+  cur_ = ops_.size();
+  OperationTime& o = ops_.emplace_back();
+  o.tool = tool;
+  o.first = at;
+  curMoved_ = false;
+  places_.emplace(k, static_cast<uint32_t>(cur_));
 }
 
 void TimeReport::toolSelected(int tool, const EventOrigin& at) {
   if (tool == tool_ && !ops_.empty()) return;
   tool_ = tool;
+  PlaceKey key{at.file, at.line, tool};
+  if (enterPlace(key)) return;
   // A new operation begins with each tool; an empty first one (nothing ran yet) is reused,
-  // and so is one a comment just started (the CAM system's name, then its tool change).
-  if (!ops_.empty() && ((ops_.back().time.model == 0 && ops_.back().time.simple == 0 &&
-                         ops_.size() == 1 && !ops_.back().byComment) ||
-                        (ops_.back().byComment && ops_.back().moves == 0))) {
-    ops_.back().tool = tool;
-    if (!ops_.back().byComment) ops_.back().first = at;
-    return;
+  // and so is one a comment just started (the CAM system's name, then its tool change): the
+  // tool change's place then leads to it too.
+  if (!ops_.empty()) {
+    OperationTime& o = ops_[cur_];
+    bool emptyStart = ops_.size() == 1 && !o.byComment && o.time.model == 0 && o.time.simple == 0 &&
+                      places_.empty();
+    if (emptyStart || (o.byComment && !curMoved_)) {
+      o.tool = tool;
+      if (!o.byComment) o.first = at;
+      places_.emplace(key, static_cast<uint32_t>(cur_));
+      return;
+    }
   }
-  ops_.emplace_back();
-  ops_.back().tool = tool;
-  ops_.back().first = at;
+  startOperation(tool, at, key);
 }
 
 void TimeReport::commentSeen(std::string_view text, const EventOrigin& at) {
   size_t b = text.find_first_not_of(' '), e = text.find_last_not_of(' ');
   text = b == std::string_view::npos ? std::string_view{} : text.substr(b, e - b + 1);
   if (text.empty()) return;
+  PlaceKey key{at.file, at.line, kCommentPlace};
+  if (enterPlace(key)) return;
   // Until the operation has moved, further comments describe it (the tool, the stock...):
   // the first one names it.
-  if (!ops_.empty() && ops_.back().moves == 0) {
-    OperationTime& o = ops_.back();
+  if (!ops_.empty() && !curMoved_) {
+    OperationTime& o = ops_[cur_];
     if (o.label.empty()) {
       o.label = std::string(text);
       o.byComment = true;
       if (o.first.line == 0) o.first = at;
+      places_.emplace(key, static_cast<uint32_t>(cur_));
     }
     return;
   }
-  ops_.emplace_back();
-  OperationTime& o = ops_.back();
-  o.tool = tool_;
-  o.first = at;
-  o.label = std::string(text);
-  o.byComment = true;
+  startOperation(tool_, at, key);
+  ops_[cur_].label = std::string(text);
+  ops_[cur_].byComment = true;
 }
 
 // Out of the per-move path: a file's table is allocated at the file's size, or grows by
@@ -86,7 +113,7 @@ void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double 
   OperationTime& o = op();
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
-  if (kind == TimeKind::Dwell) ++o.moves;
+  if (kind == TimeKind::Dwell) moved(o, 1);
   addLine(at, model, simple);
 }
 
@@ -100,7 +127,7 @@ void TimeReport::addMoveTime(MoveMode mode, const EventOrigin& at, double length
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
   (rapid ? o.rapidLength : o.feedLength) += length;
-  ++o.moves;
+  moved(o, 1);
   addLine(at, model, simple);
 }
 
@@ -112,7 +139,7 @@ void TimeReport::addCutting(double model, double simple, double length, uint64_t
   o.time.add(model, simple);
   o.byKind[kind].add(model, simple);
   o.feedLength += length;
-  o.moves += moves;
+  moved(o, moves);
 }
 
 void TimeReport::trackDrilling(const MoveEvent& e) {
@@ -232,6 +259,7 @@ nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t
     e["tool"] = o.tool;
     e["label"] = o.label.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.label);
     e["start"] = where(o.first, files);
+    e["runs"] = o.runs;
     e["path_length"] = {{"rapid", o.rapidLength}, {"feed", o.feedLength}};
     nlohmann::json k = nlohmann::json::object();
     for (int q = 0; q < kTimeKinds; ++q)

@@ -6,9 +6,11 @@
 #include <bit>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -30,12 +32,17 @@ struct ToolTime {
   TimePair time;
 };
 
+// An operation is a place in the program: the tool change (with its tool) or the operation
+// comment that starts it (the rule: docs/setup-format.md [timing] operation_comments). When
+// the program passes that place again (an M99 loop, a bar feeder's next part, a GOTO back)
+// the same operation goes on: the report holds one entry per place, whatever the run length.
 struct OperationTime {
   int tool = 0;
   EventOrigin first;       // the block that started it (tool change, comment), or the program start
   std::string label;       // the comment that named it (empty: none)
   bool byComment = false;  // started by a comment
-  uint64_t moves = 0;      // moves and dwells so far (an operation without any can be merged)
+  uint64_t moves = 0;      // moves and dwells
+  uint64_t runs = 1;       // times the program entered it
   TimePair time;
   double rapidLength = 0, feedLength = 0;
   std::array<TimePair, kTimeKinds> byKind{};
@@ -97,6 +104,25 @@ class TimeReport {
 
  private:
   OperationTime& op();
+  // The places that start an operation (a comment's key has no tool), and entering one.
+  struct PlaceKey {
+    uint32_t file = 0, line = 0;
+    int32_t tool = 0;
+    bool operator==(const PlaceKey&) const = default;
+  };
+  struct PlaceHash {
+    size_t operator()(const PlaceKey& k) const {
+      return std::hash<uint64_t>{}((uint64_t{k.file} << 32 | k.line) ^
+                                   (static_cast<uint64_t>(static_cast<uint32_t>(k.tool)) << 20));
+    }
+  };
+  static constexpr int32_t kCommentPlace = std::numeric_limits<int32_t>::min();
+  bool enterPlace(const PlaceKey& k);
+  void startOperation(int tool, const EventOrigin& at, const PlaceKey& k);
+  void moved(OperationTime& o, uint64_t moves) {
+    o.moves += moves;
+    curMoved_ = curMoved_ || moves > 0;
+  }
   void addLine(const EventOrigin& at, double model, double simple) {
     if (at.file >= lines_.size() || at.line >= lines_[at.file].count.size()) [[unlikely]]
       growLines(at);
@@ -112,6 +138,9 @@ class TimeReport {
   TimePair total_;
   std::array<TimePair, kTimeKinds> byKind_{};
   std::vector<OperationTime> ops_;
+  std::unordered_map<PlaceKey, uint32_t, PlaceHash> places_;  // place -> ops_ index
+  size_t cur_ = 0;         // the operation running (ops_ index, when ops_ is not empty)
+  bool curMoved_ = false;  // it moved (or dwelt) since the program entered it
   int tool_ = 0;
   // Per file, per line (lines are dense: vectors, not a map); file and line are the indexes.
   // All zero until a block of the line runs, so the table grows by a plain memset.

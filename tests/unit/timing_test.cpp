@@ -285,6 +285,31 @@ TEST(TimingStage, OperationsByComment) {
   EXPECT_NEAR(simple.timing->operations()[1].time.model, 0.5, 1e-12);
 }
 
+// An operation is a place in the program: passing it again (an M99 loop, a bar feeder's
+// next part) goes on with the same operation, so the list stays as long as the program.
+TEST(TimeReport, LoopsGoOnWithTheOperationOfTheirPlace) {
+  for (bool dynamic : {false, true}) {
+    ncvm::Setup s = dynamic ? dynamicSetup() : defaultSetup();
+    applySetting(s, "limits.max_blocks=4003");
+    auto r = run(
+        "O1\n(ROUGH)\nT1 M06\nG91 G01 X1. F600.\n(FINISH)\nG04 X0.5\nT2 M06\nG01 Y1.\nM99\n", s);
+    const auto& ops = r.timing->operations();
+    ASSERT_EQ(ops.size(), 3u) << "dynamic " << dynamic;
+    EXPECT_EQ(ops[0].label, "ROUGH");
+    EXPECT_EQ(ops[0].tool, 1);
+    EXPECT_EQ(ops[1].label, "FINISH");
+    EXPECT_EQ(ops[2].tool, 2);
+    // 8 blocks a pass: 500 passes, and the 501st stopped after (ROUGH) T1 G01.
+    EXPECT_EQ(ops[0].runs, 501u);
+    EXPECT_EQ(ops[1].runs, 500u);
+    EXPECT_EQ(ops[2].runs, 500u);
+    EXPECT_NEAR(ops[1].time.model, 500 * 0.5, 1e-9);
+    double sum = 0;
+    for (const auto& o : ops) sum += o.time.model;
+    EXPECT_NEAR(sum, total(r), 1e-9);
+  }
+}
+
 // The per-line table keeps times only: the top blocks' program and N come from the block on
 // the line (a subprogram's line run three times, then the main program's).
 TEST(TimeReport, TopBlocksNameTheirProgramAndN) {
