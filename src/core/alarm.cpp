@@ -55,6 +55,15 @@ const std::vector<AlarmInfo>& alarmTable() {
        "The block after a ,C or ,R block (or the ,C/,R block itself) is not G01, G02 or G03."},
       {AlarmId::ChamferMoveTooShort, "MISSING MOVE VALUE IN CHF/CNR",
        "The chamfer or corner R does not fit on one of its two blocks (larger than the block)."},
+      {AlarmId::NoEndPointAndAngle, "NO END POINT & ANGLE IN CHF/CNR",
+       "Direct drawing dimensions (lathe ,A): the block after an angle-only block lacks its "
+       "absolute X and Z or its angle, or X, Z and ,A come without an angle-only block before."},
+      {AlarmId::NoSolutionOfBlockEnd, "NO SOLUTION OF BLOCK END",
+       "Direct drawing dimensions (lathe ,A): the end point cannot be computed (the angle runs "
+       "along the given coordinate, or the two lines of an angle-only block are parallel)."},
+      {AlarmId::EndPointNotFound, "END POINT NOT FOUND",
+       "Direct drawing dimensions (lathe ,A): an angle-only block with no NC block after it "
+       "(a macro statement, the end of the program or of the G70-G73 shape)."},
       {AlarmId::CycleAddressPQNotFound, "ADDRESS P/Q NOT FOUND IN G70-G73",
        "G70-G73 without the P or Q that names the shape program."},
       {AlarmId::CycleIllegalCommand, "ILLEGAL COMMAND IN G71-G76",
@@ -119,6 +128,8 @@ const std::vector<AlarmInfo>& alarmTable() {
        "rotation plane."},
       {AlarmId::IllegalSInRigidTap, "ILLEGAL S CODE COMMAND",
        "Rigid tapping (M29 before G84/G74, lathe G84/G88) with no spindle speed S."},
+      {AlarmId::DirectDrawingPlane, "ILLEGAL PLANE SELECT",
+       "Direct drawing dimensions (lathe ,A) outside the Z-X plane (G18)."},
       {AlarmId::OvertravelPlus, "+ OVERTRAVEL ( SOFT 1 )",
        "A move would pass an axis' upper stroke limit (axes.<X>.max); it is refused before it starts."},
       {AlarmId::OvertravelMinus, "- OVERTRAVEL ( SOFT 1 )",

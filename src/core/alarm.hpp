@@ -44,6 +44,10 @@ enum class AlarmId : uint16_t {
   MissingMoveAfterChamfer = 51,
   NotG01AfterChamfer = 52,
   ChamferMoveTooShort = 55,
+  // lathe direct drawing dimensions (,A)
+  NoEndPointAndAngle = 56,
+  NoSolutionOfBlockEnd = 57,
+  EndPointNotFound = 58,
   // lathe multiple repetitive cycles (G70-G76)
   CycleAddressPQNotFound = 61,
   CycleIllegalCommand = 62,
@@ -77,6 +81,7 @@ enum class AlarmId : uint16_t {
   IllegalScaleRate = 142,
   IllegalPlaneForRotation = 144,
   IllegalSInRigidTap = 200,
+  DirectDrawingPlane = 212,
   OvertravelPlus = 500,   // shown as OT0500
   OvertravelMinus = 501,  // shown as OT0501
   // ncvm limits and environment

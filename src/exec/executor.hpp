@@ -391,6 +391,17 @@ class Executor {
   double cssRpmAt(int64_t xMachine) const;
   void checkStroke(const std::array<int64_t, kMaxAxes>& toMachine);
 
+  // direct_drawing.cpp: a lathe G00/G01 block with ,A gets its end point as U and W. One end
+  // coordinate: the other from the start point (x radius, z in program units); the angle
+  // alone: the corner with the next block's line (angleSecond_ is that block, whose ,A has
+  // then been used). `diameter` is 2 when U counts a diameter.
+  void directDrawingHere(Words& w);
+  void directDrawing(Words& w, const lathe::Pt& start, int motion, double diameter) const;
+  void directDrawingCorner(Words& w, int motion, const Words& next, int nextMotion,
+                           bool nextIncremental, const lathe::Pt& start, double diameter) const;
+  void shapeDirectDrawing(const Program& prog, int32_t k, int32_t last, Words& w,
+                          const lathe::Pt& at, int motion, int32_t& second);
+  const Block* angleSecond_ = nullptr;
   // probe.cpp
   void skipMove(const Words& w);
   // position_offset.cpp: G45-G48 (the one-shot code x10); true when the block moved

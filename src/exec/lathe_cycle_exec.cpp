@@ -91,6 +91,7 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
   double u = unitNm(modal_.unit);
   const Block* saved = block_;
   std::vector<ContourCorner> corners;  // ,C/,R of the shape blocks
+  int32_t angleSecond = -1;            // the block after an angle-only ,A block
   for (int32_t k = first; k <= last; ++k) {
     const Block& b = prog.blocks[static_cast<size_t>(k)];
     if (b.kind == BlockKind::Empty) continue;
@@ -118,10 +119,11 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
       c.nsNamesZ = w.has('Z') || w.has('W');
     }
     if (w.has('F')) feed = w.value('F');
-    if (!w.any("XZUWRIK")) continue;
+    if (!w.any("XZUWRIK") && !w.hasCommaA) continue;
     lathe::ContourSeg s;
     s.blockIndex = k;
     s.comp = comp;
+    if (w.hasCommaA) shapeDirectDrawing(prog, k, last, w, at, motion, angleSecond);
     s.end = latheTarget(w, at);
     // Parameter 3403#5 (CIR) = 0: an arc with neither R nor I/K is a line to its end point.
     bool arc = (motion == 20 || motion == 30) && (w.any("RIK") || setup_.bit("3403#5"));

@@ -86,6 +86,12 @@ void Executor::gatherWords(const Block& b, Words& w) {
       throw e;
     }
     char L = wd.letter;
+    if (L == 'a') {
+      w.hasCommaA = true;
+      w.commaAngle = v;
+      w.commaACol = wd.col;
+      continue;
+    }
     if (L == 'c' || L == 'r') {
       // ,C and ,R: one of them per block (PS0053 on the control; the later one wins here).
       w.hasCommaC = L == 'c';
@@ -220,7 +226,7 @@ void Executor::deriveModal() {
 }
 
 // A block of nothing but G00/G01/G02/G03 and X Y Z F I J K R words on a mill, with no
-// cutter compensation, transform, polar coordinates (G16), canned cycle, modal call (G66), corner word (,C/,R) or
+// cutter compensation, transform, polar coordinates (G16), canned cycle, modal call (G66), comma word (,C/,R/,A) or
 // code call of its G code in effect: of execNcGeneral's generic order only the modal G code, F and
 // the move do anything, so they run here without the walk through every other word and
 // mode (the bulk of a CAM program). Returns false, having changed nothing, for any other
@@ -228,7 +234,8 @@ void Executor::deriveModal() {
 bool Executor::plainMotion(Words& w) {
   constexpr uint32_t kPlain = bit('G') | bit('X') | bit('Y') | bit('Z') | bit('F') | bit('I') |
                               bit('J') | bit('K') | bit('R');
-  if (lathe_ || (w.present & ~kPlain) || w.nm || w.ng > 1 || w.nameIdx >= 0 || w.hasCorner())
+  if (lathe_ || (w.present & ~kPlain) || w.nm || w.ng > 1 || w.nameIdx >= 0 || w.hasCorner() ||
+      w.hasCommaA)
     return false;
   if (modal_.g[7] != 400 || modal_.g[9] != 800 || modal_.g[17] != 150 || !modalCalls_.empty() ||
       xf_.active() || cornerHold_ || crcCorner_ || crcBusy())
@@ -442,6 +449,7 @@ void Executor::execNcGeneral(const Block& b) {
   bool moved = false;
   std::array<int64_t, kMaxAxes> target{};
   uint32_t mask = 0;
+  if (w.hasCommaA) directDrawingHere(w);  // ,A: the missing end coordinate, or its alarm
   // Lathe drilling cycles (G83-G89, modal until G80 or group 01).
   if (lathe_ && modal_.g[9] != 800 && oneShot < 0) {
     moved = latheDrillCycle(w, cycleCommanded);

@@ -26,6 +26,10 @@ struct Words {
   double commaValue = 0;
   uint16_t commaCol = 0;
   bool hasCorner() const { return hasCommaC || hasCommaR; }
+  // ,A: the angle of a lathe direct drawing dimension (degrees from +Z, counter-clockwise).
+  bool hasCommaA = false;
+  double commaAngle = 0;
+  uint16_t commaACol = 0;
   struct Arg {
     char letter;
     double value;

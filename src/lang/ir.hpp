@@ -68,9 +68,9 @@ enum BlockFlags : uint8_t {
   kPlainBlock = 1,
 };
 
-// Letters are 'A'..'Z'; the 30i comma words ,C and ,R are stored as 'c' and 'r'. 16 bytes: a
-// literal needs only `value`, every other kind only `a`, so they share the storage (a
-// 1,000,000-line CAM program holds 3,000,000 words).
+// Letters are 'A'..'Z'; the 30i comma words ,C and ,R are stored as 'c' and 'r' (the lathe's ,A as
+// 'a'). 16 bytes: a literal needs only `value`, every other kind only `a`, so they share the
+// storage (a 1,000,000-line CAM program holds 3,000,000 words).
 struct Word {
   char letter = 0;
   WordKind kind = WordKind::Literal;

@@ -542,7 +542,8 @@ void Compiler::parseStatements() {
     } else if (isUpper(c)) {
       if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
       parseWord();
-    } else if (c == ',' && (peek(commaLetter()) == 'C' || peek(commaLetter()) == 'R')) {
+    } else if (c == ',' && (peek(commaLetter()) == 'C' || peek(commaLetter()) == 'R' ||
+                            peek(commaLetter()) == 'A')) {
       if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
       parseCommaWord();
     } else if (c == '<') {
@@ -765,7 +766,7 @@ void Compiler::parseWord() {
 void Compiler::parseCommaWord() {
   uint32_t at = col();
   const size_t k = commaLetter();
-  char letter = peek(k) == 'C' ? 'c' : 'r';
+  char letter = peek(k) == 'C' ? 'c' : peek(k) == 'A' ? 'a' : 'r';
   i_ += k + 1;
   skipSpaces();
   Word w;
@@ -786,9 +787,9 @@ void Compiler::parseCommaWord() {
     char first = peek();
     w.value = parseNumberText(hasPoint, intDigits);
     if (i_ == numStart || (i_ == numStart + 1 && (first == '-' || first == '+')))
-      fail(AlarmId::NoDataAfterAddress, letter == 'c' ? ",C" : ",R", at);
+      fail(AlarmId::NoDataAfterAddress, letter == 'c' ? ",C" : letter == 'a' ? ",A" : ",R", at);
     if (intDigits > 9 || numberTooLong_)
-      fail(AlarmId::TooManyDigits, letter == 'c' ? ",C" : ",R", at);
+      fail(AlarmId::TooManyDigits, letter == 'c' ? ",C" : letter == 'a' ? ",A" : ",R", at);
     if (hasPoint) w.flags |= kHasPoint;
   }
   prog_->words.push_back(w);
