@@ -38,6 +38,7 @@ static ParseOptions parseOptionsFor(const Setup& s) {
   o.maxLineLength = s.limits.maxLineLength;
   o.eightDigitO = s.programNumberDigits == 8;
   o.hIsAxis = s.kind == MachineKind::Lathe && s.axes[5].present;
+  o.blockSkip = s.blockSkip;
   return o;
 }
 

@@ -546,6 +546,14 @@ void Compiler::parseStatements() {
                             peek(commaLetter()) == 'A')) {
       if (sawStatement_) fail(AlarmId::DuplicateNcMacro, {}, at);
       parseCommaWord();
+    } else if (c == '/' && !sawStatement_) {
+      // A slash after the head of an NC block (outside brackets, where it would divide): with
+      // its switch on, the information from it up to the end of the block is ignored; with the
+      // switch off it is read over (16i/0i "position of a slash", docs/fanuc-decisions.md §9).
+      ++i_;
+      size_t level = 1;
+      if (peek() >= '1' && peek() <= '9') level = static_cast<size_t>(peek() - '0'), ++i_;
+      if (opt_.blockSkip[level]) i_ = end_;
     } else if (c == '<') {
       // <name> as the program of M98/G65/G66 (30i): stored as word '<' naming a string.
       size_t close = s_.find('>', i_);

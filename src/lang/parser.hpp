@@ -4,6 +4,7 @@
 // A block the compiler rejects becomes an Error block: the alarm is raised when execution
 // reaches it, as on the control, and `ncvm check` lists it. Loop and label errors
 // (Program::structural) are found after the whole program is read, before anything runs.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string_view>
@@ -25,6 +26,10 @@ struct ParseOptions {
   // Compiled one piece at a time with its blocks dropped in between (a streamed program,
   // program_stream.hpp): the arrays are sized for a piece, not for the file.
   bool piecewise = false;
+  // The optional block skip switches ([1]..[9], Setup::blockSkip). A '/' after the head of an
+  // NC block ("G43 H6 Z.25 /M8", as CAM posts write it) skips the rest of the block when its
+  // switch is on, which the compiler decides: the switches are fixed for a run.
+  std::array<bool, 10> blockSkip{};
 };
 
 struct ParsedFile {
