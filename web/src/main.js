@@ -201,7 +201,6 @@ function goTo(pos) {
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
   const state = stateAt(m, idx);
-  tool.event = ev; // the position page's actual feed is that of the move in progress
   renderPosition($('p-position'), m, tool, state || stateAt(m, 0));
   renderVariables($('p-vars'), state, ui.shown);
   ui.shown = state;
