@@ -276,6 +276,7 @@ void runViewerJob(const nlohmann::json& request, const std::function<void(std::s
     Session& session = *p.session;
     stream = std::make_unique<ViewerStream>(session.files(), session.setup(),
                                             session.setup().limits.maxTraceBytes, out);
+    stream->renameText([&](std::string text) { return withFolderNames(std::move(text), folders); });
     session.setInspector([&](Executor& e) { stream->attach(&e); });
     Session::Result r = session.run(stream.get());
     stream->attach(nullptr);

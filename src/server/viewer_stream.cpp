@@ -85,7 +85,7 @@ void ViewerStream::columns(EventKind kind, uint8_t flags, const EventOrigin& at,
   block_.push_back(static_cast<uint32_t>(diff_.blocks()));
   n_.push_back(at.n);
   if (at.file >= fileNames_.size()) fileNames_.resize(at.file + 1);
-  if (fileNames_[at.file].empty()) fileNames_[at.file] = files_.name(at.file);
+  if (fileNames_[at.file].empty()) fileNames_[at.file] = shown(files_.name(at.file));
   file_.push_back(static_cast<uint16_t>(std::min<uint32_t>(at.file, 65535)));
   kind_.push_back(static_cast<uint8_t>(kind));
   flags_.push_back(flags);
@@ -201,12 +201,12 @@ void ViewerStream::flushBatch() {
   trace_->flush();
   std::fflush(noteFile_);
   if (!steps_.empty() || !notes_.empty()) {
-    out_(frame(FrameKind::Steps, dump({{"steps", steps_}, {"notes", notes_}})));
+    out_(frame(FrameKind::Steps, shown(dump({{"steps", steps_}, {"notes", notes_}}))));
     steps_ = nlohmann::json::array();
     notes_ = nlohmann::json::array();
   }
   if (noteSize_ > noteSent_) {
-    out_(frame(FrameKind::Notes, std::string_view(noteMem_ + noteSent_, noteSize_ - noteSent_)));
+    out_(frame(FrameKind::Notes, shown(std::string(noteMem_ + noteSent_, noteSize_ - noteSent_))));
     noteSent_ = noteSize_;
   }
 }

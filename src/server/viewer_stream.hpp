@@ -91,6 +91,9 @@ class ViewerStream final : public EventSink {
   ViewerStream(const ViewerStream&) = delete;
   ViewerStream& operator=(const ViewerStream&) = delete;
   void attach(Executor* exec) { diff_.attach(exec); }
+  // How text the client sees is shown: file names and the notes' and steps' text pass
+  // through `rename` (the server names its folders by their roots: run_job.cpp).
+  void renameText(std::function<std::string(std::string)> rename) { rename_ = std::move(rename); }
   // The last batch, then the end frame with `tail` and "files" (the names of the file ids).
   void finish(nlohmann::json tail);
   uint64_t events() const { return events_; }
@@ -115,7 +118,10 @@ class ViewerStream final : public EventSink {
                bool offsetsChanged);
   void flushBatch();
 
+  std::string shown(std::string text) const { return rename_ ? rename_(std::move(text)) : text; }
+
   const SourceFiles& files_;
+  std::function<std::string(std::string)> rename_;
   const int axes_;
   StreamOutput out_;
   const size_t batchEvents_;

@@ -966,6 +966,30 @@ TEST_F(ServerTest, BinaryRunStreamsFramesByTextAndByPath) {
   }
 }
 
+// No absolute server path in the binary answer either: the file names of the end frame and
+// the notes' text (a dwell of a sub-program found in the library) are named by their root.
+TEST_F(ServerTest, BinaryRunNamesFilesByTheirRoot) {
+  write(root.path / "parts" / "O2001.nc", "O2001\nG04 X0.1\nM99\n");
+  auto r = client().Post("/api/run.bin",
+                         json{{"program", "O0001\nM98 P2001\nM30\n"},
+                              {"name", "p1.nc"},
+                              {"root", "root"},
+                              {"dir", "parts"}}
+                             .dump(),
+                         "application/json");
+  ASSERT_TRUE(r);
+  std::vector<Frame> frames = framesOf(r->body);
+  ASSERT_FALSE(frames.empty());
+  json end = json::parse(frames.back().payload);
+  ASSERT_TRUE(end["ok"].get<bool>()) << end.dump();
+  EXPECT_EQ(r->body.find(fs::canonical(root.path).string()), std::string::npos)
+      << "an absolute server path in the binary answer";
+  bool named = false;
+  for (const auto& f : end["files"])
+    named |= f.is_string() && f.get<std::string>() == "root/parts/O2001.nc";
+  EXPECT_TRUE(named) << end["files"].dump();
+}
+
 TEST_F(ServerTest, BinaryRunTimeoutIsItsEndFrame) {
   auto r =
       client().Post("/api/run.bin",

@@ -161,11 +161,15 @@ export class View3D {
     this.draw();
   }
 
+  // The path's one colour attribute: the layer's geometry's, or shared by both draw ranges.
+  pathColourAttribute() {
+    return (this.layer ? this.pathGeometry : this.paths[true].geometry).getAttribute('color');
+  }
+
   // A new colour for every vertex of the path (colour_by.js): one upload, the draw ranges kept.
   setPathColours(rgb) {
     if (!this.model) return;
-    // One colour attribute, shared by the layer's geometry or by both draw ranges.
-    const color = (this.layer ? this.pathGeometry : this.paths[true].geometry).getAttribute('color');
+    const color = this.pathColourAttribute();
     color.array.set(rgb);
     color.needsUpdate = true;
     if (this.layer) this.layer.dirty = true; // the layer keeps the path drawn for the camera

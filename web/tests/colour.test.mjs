@@ -22,7 +22,7 @@ const pathState = () =>
   page.evaluate(() => {
     const host = document.getElementById('view');
     const view = host.link.view, m = host.link.model;
-    const attr = view.paths[true].geometry.getAttribute('color');
+    const attr = view.pathColourAttribute();
     const c = attr.array, v = m.vertices;
     const moves = [];
     for (let mv = 0; mv < m.moves; mv++) {
