@@ -422,6 +422,7 @@ void TimingStage::commit(const Run& run) {
     before = at;
     if (i == run.last && run.stopAfter) time += t_.inPositionS;
     report_.addLineTime(h.at, time, h.timeSimple);
+    report_.addDrillMove(h.drill, time, h.timeSimple);
     model += time, simple += h.timeSimple, length += h.length;
     if (!next_) continue;
     MoveEvent& e = events_[i];
@@ -461,7 +462,6 @@ void TimingStage::onMove(const MoveEvent& in) {
     forwardMove(e);
     return;
   }
-  report_.trackDrilling(in);
   if (next_) {
     events_.push_back(in);
     events_.back().timeSimple = in.time;
@@ -471,6 +471,7 @@ void TimingStage::onMove(const MoveEvent& in) {
   h.at = in.at;
   h.length = in.length;
   h.timeSimple = in.time;
+  h.drill = DrillMove::of(in);
   setSegment(in, h);
   h.cum = cum + h.len;
   if (h.len > 0) setJunction(h);
@@ -487,6 +488,7 @@ void TimingStage::onMove(const MoveEvent& in) {
 
 void TimingStage::finish() {
   stop();
+  report_.finish();
 }
 
 void TimingStage::onDwell(const DwellEvent& e) {
