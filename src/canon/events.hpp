@@ -71,7 +71,8 @@ struct MessageEvent {
 };
 
 // A block with nothing but a comment (and perhaps N) on its line, as CAM systems name their
-// operations: `(ROUGH FACE)`. The program's title after O is not one.
+// operations: `(ROUGH FACE)`. Only the main program's, outside WHILE loops (not one in a
+// subprogram, a macro or a loop body); the program's title after O is not one.
 struct CommentEvent {
   EventOrigin at;
   std::string_view text;

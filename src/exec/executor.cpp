@@ -361,8 +361,11 @@ bool Executor::step() {
   const MacroOps& o = prog.ops(b);
   switch (b.kind) {
     case BlockKind::Empty:
-      // A comment alone on its line names what follows (the time report's operations).
-      if (b.comment >= 0)
+      // A comment alone on a line of the main program, outside WHILE loops, names the
+      // operation that follows (the time report's operations). One in a subprogram or macro,
+      // or in a loop, describes a step of it: a drilling macro's "(END OF THE PECK)" is no
+      // operation.
+      if (b.comment >= 0 && frames_.size() == 1 && prog.loopParent(f.pc) < 0)
         sink().onComment(CommentEvent{origin_, prog.strings[static_cast<size_t>(b.comment)]});
       ++f.pc;
       break;

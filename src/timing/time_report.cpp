@@ -114,6 +114,7 @@ void TimeReport::add(TimeKind kind, const EventOrigin& at, double model, double 
   o.time.add(model, simple);
   o.byKind[static_cast<size_t>(kind)].add(model, simple);
   if (kind == TimeKind::Dwell) moved(o, 1);
+  holes_.other(model, simple);
   addLine(at, model, simple);
 }
 
@@ -140,39 +141,6 @@ void TimeReport::addCutting(double model, double simple, double length, uint64_t
   o.byKind[kind].add(model, simple);
   o.feedLength += length;
   moved(o, moves);
-}
-
-void TimeReport::trackDrilling(const MoveEvent& e) {
-  constexpr double eps = 1e-6;
-  bool sameXY = std::fabs(e.end[0] - e.start[0]) < eps && std::fabs(e.end[1] - e.start[1]) < eps;
-  bool atHole =
-      inHole_ && std::fabs(e.start[0] - holeX_) < eps && std::fabs(e.start[1] - holeY_) < eps;
-  if (e.mode != MoveMode::Rapid) {
-    bool peck = (e.mode == MoveMode::Linear) && sameXY && e.end[2] < e.start[2] - eps;
-    for (int k = 3; k < kMaxAxes && peck; ++k)
-      peck = std::fabs(e.end[static_cast<size_t>(k)] - e.start[static_cast<size_t>(k)]) < eps;
-    if (!peck) {
-      if (!sameXY || !atHole) inHole_ = false;
-      return;
-    }
-    if (!atHole) {
-      inHole_ = true;
-      ++drill_.holes;
-      holeX_ = e.start[0], holeY_ = e.start[1], holeTop_ = e.start[2];
-      retractedToTop_ = false;
-    } else if (retractedToTop_) {
-      ++drill_.fullRetracts;
-      retractedToTop_ = false;
-    }
-    ++drill_.pecks;
-    return;
-  }
-  if (!inHole_) return;
-  if (!sameXY || !atHole) {
-    inHole_ = false;
-    return;
-  }
-  if (e.end[2] >= holeTop_ - eps) retractedToTop_ = true;
 }
 
 std::vector<ToolTime> TimeReport::byTool() const {
@@ -278,8 +246,22 @@ nlohmann::json TimeReport::toJson(const SourceFiles& files, bool dynamic, size_t
     top.push_back(e);
   }
   j["top_blocks"] = top;
-  j["drilling"] = {
-      {"holes", drill_.holes}, {"pecks", drill_.pecks}, {"full_retracts", drill_.fullRetracts}};
+  const DrillStats& d = holes_.stats();
+  j["drilling"] = {{"holes", d.holes}, {"pecks", d.pecks}, {"full_retracts", d.fullRetracts}};
+  nlohmann::json holes = nlohmann::json::array();
+  for (const HoleTime& h : holes_.holes()) {
+    nlohmann::json e = pair(h.time);
+    e["operation"] = h.op;
+    e["tool"] = h.op < ops_.size() ? ops_[h.op].tool : 0;
+    e["x"] = h.x;
+    e["y"] = h.y;
+    e["pecks"] = h.pecks;
+    e["full_retracts"] = h.fullRetracts;
+    e["runs"] = h.runs;
+    holes.push_back(e);
+  }
+  j["holes"] = holes;
+  if (holes_.unlisted() > 0) j["holes_unlisted"] = holes_.unlisted();
   return j;
 }
 

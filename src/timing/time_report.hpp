@@ -1,8 +1,9 @@
 #pragma once
 // Where the time goes: totals, and breakdowns per block type, per tool, per operation (the
-// blocks between tool changes) and per program line, each with the modelled time and the
-// plain length / feed time beside it; plus the peck-drilling count (pecks and full
-// retracts), so two drilling strategies can be compared.
+// blocks between tool changes and operation comments) and per program line, each with the
+// modelled time and the plain length / feed time beside it; plus the holes drilled, each with
+// its time, pecks and full retracts (hole_tracker.hpp), so two drilling strategies can be
+// compared.
 #include <bit>
 #include <cstdint>
 #include <functional>
@@ -15,17 +16,13 @@
 
 #include "canon/events.hpp"
 #include "core/source.hpp"
+#include "timing/hole_tracker.hpp"
 
 namespace ncvm {
 
 enum class TimeKind : uint8_t { Rapid, Cutting, Dwell, Auxiliary };
 constexpr int kTimeKinds = 4;
 const char* timeKindName(TimeKind k);
-
-struct TimePair {
-  double model = 0, simple = 0;
-  void add(double m, double s) { model += m, simple += s; }
-};
 
 struct ToolTime {
   int tool = 0;
@@ -54,25 +51,22 @@ struct LineTime {
   TimePair time;
 };
 
-// Peck drilling seen in the moves: a peck is a feed move along -Z only; a full retract is a
-// rapid back to (or above) the level the hole's first peck started from, between two pecks
-// of the same hole (the final retract out of the hole is not counted).
-struct DrillStats {
-  uint64_t holes = 0, pecks = 0, fullRetracts = 0;
-};
-
 class TimeReport {
  public:
   void addMove(const MoveEvent& e, double model, double simple) {
     addMoveTime(e.mode, e.at, e.length, model, simple);
-    trackDrilling(e);
+    addDrillMove(DrillMove::of(e), model, simple);
   }
   // addMove in two halves, for the look-ahead that holds compact records rather than events:
-  // the drilling count when the move arrives (it depends only on the order of the moves),
-  // the time when it is planned.
+  // the move's time, and the move as the hole tracker sees it, with the same time (called in
+  // the order of the moves, when it is planned).
   void addMoveTime(MoveMode mode, const EventOrigin& at, double length, double model,
                    double simple);
-  void trackDrilling(const MoveEvent& e);
+  void addDrillMove(const DrillMove& m, double model, double simple) {
+    holes_.move(m, model, simple, static_cast<uint32_t>(cur_));
+  }
+  // The program ended (the hole the tool is in closes).
+  void finish() { holes_.finish(); }
   // addMoveTime in two halves again, for a run of cutting moves planned as one profile: each
   // block's time on its line, then the run's sums once.
   void addLineTime(const EventOrigin& at, double model, double simple) {
@@ -87,7 +81,11 @@ class TimeReport {
   const TimePair& total() const { return total_; }
   const TimePair& byKind(TimeKind k) const { return byKind_[static_cast<size_t>(k)]; }
   const std::vector<OperationTime>& operations() const { return ops_; }
-  const DrillStats& drilling() const { return drill_; }
+  const DrillStats& drilling() const { return holes_.stats(); }
+  // The holes by operation and position (at most HoleTracker::kMaxListed; holesUnlisted()
+  // counts the rest).
+  const std::vector<HoleTime>& holes() const { return holes_.holes(); }
+  uint64_t holesUnlisted() const { return holes_.unlisted(); }
   std::vector<ToolTime> byTool() const;
   // The per-line table keeps times and counts only (20 bytes a line); where a line is (its
   // program and N number) comes from this for the few lines reported. Without it the top
@@ -155,10 +153,7 @@ class TimeReport {
   static void addSimple(LineTable& t, uint32_t line, double simple);
   std::vector<LineTable> lines_;
   std::vector<uint32_t> lineCounts_;
-  // Drilling state.
-  DrillStats drill_;
-  bool inHole_ = false, retractedToTop_ = false;
-  double holeX_ = 0, holeY_ = 0, holeTop_ = 0;
+  HoleTracker holes_;
 };
 
 }  // namespace ncvm

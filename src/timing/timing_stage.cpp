@@ -422,6 +422,7 @@ void TimingStage::commit(const Run& run) {
     before = at;
     if (i == run.last && run.stopAfter) time += t_.inPositionS;
     report_.addLineTime(h.at, time, h.timeSimple);
+    report_.addDrillMove(h.drill, time, h.timeSimple);
     model += time, simple += h.timeSimple, length += h.length;
     if (!next_) continue;
     MoveEvent& e = events_[i];
@@ -465,7 +466,6 @@ void TimingStage::onMove(const MoveEvent& in) {
     forwardMove(e);
     return;
   }
-  report_.trackDrilling(in);
   if (next_) {
     events_.push_back(in);
     events_.back().timeSimple = in.time;
@@ -475,6 +475,7 @@ void TimingStage::onMove(const MoveEvent& in) {
   h.at = in.at;
   h.length = in.length;
   h.timeSimple = in.time;
+  h.drill = DrillMove::of(in);
   setSegment(in, h);
   h.cum = cum + h.len;
   if (h.len > 0) setJunction(h);
@@ -491,6 +492,7 @@ void TimingStage::onMove(const MoveEvent& in) {
 
 void TimingStage::finish() {
   stop();
+  report_.finish();
 }
 
 void TimingStage::onDwell(const DwellEvent& e) {

@@ -54,7 +54,7 @@ class TimingStage final : public EventSink {
   void onWorkOrigin(const WorkOriginEvent& e) override;
 
  private:
-  // A held cutting block: what the planner and the report need (mm, s), about 100 bytes (the
+  // A held cutting block: what the planner and the report need (mm, s), about 140 bytes (the
   // event itself, about 650, is kept in events_ only when a sink follows).
   struct Held {
     double len = 0;        // mm; 0: a block without motion, transparent to the planner
@@ -66,6 +66,7 @@ class TimingStage final : public EventSink {
     double length = 0;       // program units, for the report
     double timeSimple = 0;   // length / feed
     bool stopAfter = false;  // exact stop at the end
+    DrillMove drill;         // for the report's holes, with the time once planned
   };
   // An event the control sent after the held move number seq (heldBase_ counts) that does
   // not stop the look-ahead: a G96 rpm, or where work zero now is (a macro writing #5221,

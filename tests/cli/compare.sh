@@ -20,9 +20,36 @@ grep -qE '^cycle time \(length/feed\), s +11\.313 +13\.606 ' "$tmp/out" || fail 
 grep -qE '^cycle time \(modelled\), s ' "$tmp/out" || fail "modelled time row"
 grep -qE '^B is [0-9.]+ s \([0-9.]+%\) (slower|faster) than A$' "$tmp/out" || fail "verdict line"
 
+# Operations (examples/README.md's example): the hole beside the hole, not beside a step of the
+# macro (O9503's comments inside its WHILE loop and call are no operations): one operation of
+# T1 each, with the hole at X0 Y0 under it, and the operation rows add up to the cycle times.
+python3 - "$tmp/out" <<'PY' || fail "operations of the README example"
+import re, sys
+rows = open(sys.argv[1]).read().splitlines()
+def cells(line):
+    return [float(v) for v in line.split(", s", 1)[1].split()[:3]]
+total = cells(next(l for l in rows if l.startswith("cycle time (modelled)")))
+ops = [l for l in rows if re.match(r"^  op [0-9]+ T", l)]
+holes = [l for l in rows if re.match(r"^    hole X", l)]
+assert len(ops) == 1 and ops[0].startswith("  op 1 T1 "), ops
+assert len(holes) == 1 and holes[0].startswith("    hole X0 Y0, s"), holes
+a, b, d = cells(holes[0])
+assert a > 0 and b > 0 and abs(b - a - d) < 0.002, holes[0]
+for k in range(3):
+    assert abs(sum(cells(l)[k] for l in ops) - total[k]) < 0.002 * len(ops), (k, ops, total)
+PY
+
 "$ncvm" compare "$ex/g83-mill.nc" "$ex/o9503-mill.nc" --setup "$src/presets/fanuc-0i-mf.toml" --json >"$tmp/out" ||
   fail "compare --json exit $?"
 grep -q '"full_retracts": -3' "$tmp/out" || fail "json difference of full retracts"
+python3 - "$tmp/out" <<'PY' || fail "json operations"
+import json, sys
+j = json.load(open(sys.argv[1]))
+ops = j["operations"]
+assert [(o["a"], o["b"]) for o in ops] == [(0, 0)], ops
+assert [(h["x"], h["y"], h["a"], h["b"]) for h in ops[0]["holes"]] == [(0, 0, 0, 0)], ops
+assert abs(sum(o["difference"] for o in ops) - j["difference"]["cycle_time"]) < 1e-9
+PY
 
 # Operations by comment, side by side (the golden test's program against itself).
 ops="$src/tests/golden/timing/operations_by_comment"

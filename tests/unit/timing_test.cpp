@@ -310,6 +310,67 @@ TEST(TimeReport, LoopsGoOnWithTheOperationOfTheirPlace) {
   }
 }
 
+// Operations start at tool changes and at the main program's comments outside loops: a
+// comment in a WHILE body, an M98 subprogram or a G65 macro describes a step, not an
+// operation (a drilling macro's "(END OF THE PECK)" started 14 operations in O9503).
+TEST(TimeReport, CommentsInLoopsAndCallsStartNoOperation) {
+  auto r =
+      run("O1\n(FACE)\nT1 M06\nG90 G21 G94 G01 X10. F600.\n#1=0\nWHILE[#1LT3]DO1\n(PASS)\n"
+          "G91 X1.\n#1=#1+1\nEND1\nG90\nM98 P100\nG65 P200\n(FINISH)\nG90 G01 X0\nM30\n"
+          "O100\n(SUB STEP)\nG91 G01 Y1.\nM99\nO200\n(MACRO STEP)\nG91 G01 Y-1.\nM99\n",
+          defaultSetup());
+  const auto& ops = r.timing->operations();
+  ASSERT_EQ(ops.size(), 2u);
+  EXPECT_EQ(ops[0].label, "FACE");
+  EXPECT_EQ(ops[1].label, "FINISH");
+  // F600 = 10 mm/s: X10, three X1 in the loop, Y1 in O100, Y-1 in O200; then X13 -> X0.
+  EXPECT_NEAR(ops[0].time.model, 1.5, 1e-12);
+  EXPECT_NEAR(ops[1].time.model, 1.3, 1e-12);
+}
+
+// A hole: a feed along -Z, then a retract along Z at the same X Y. A pocket's plunge, left
+// sideways at depth, is none; a hole drilled in one feed (G81) has no pecks; a peck is a
+// feed after a retract within the hole. Its time runs from the first feed to the retract to
+// the level the first feed started from after the last feed (what follows is not the hole's).
+TEST(TimeReport, HolesPecksAndTheirTime) {
+  auto pocket = run("O1\nG90 G21 G94 G00 X0 Y0 Z5.\nG01 Z-2. F300.\nX20.\nY20.\nG00 Z5.\nM30\n",
+                    defaultSetup());
+  EXPECT_EQ(pocket.timing->drilling().holes, 0u);
+  EXPECT_EQ(pocket.timing->drilling().pecks, 0u);
+  EXPECT_TRUE(pocket.timing->holes().empty());
+  auto g81 = run("O1\nG90 G21 G94 G00 X0 Y0 Z10.\nG98 G81 X0 Y0 Z-10. R2. F300.\nX10.\nG80\nM30\n",
+                 defaultSetup());
+  EXPECT_EQ(g81.timing->drilling().holes, 2u);
+  EXPECT_EQ(g81.timing->drilling().pecks, 0u);
+  ASSERT_EQ(g81.timing->holes().size(), 2u);
+  EXPECT_EQ(g81.timing->holes()[1].x, 10.0);
+
+  MoveTimes m;
+  auto r =
+      run("O1\nG90 G21 G94 G00 X0 Y0 Z2.\nG01 Z-10. F600.\nG00 Z2.\nZ-9.\nG01 Z-20.\nG04 X1.\n"
+          "G00 Z2.\nZ50.\nX10.\nM30\n",
+          defaultSetup(), &m);
+  ASSERT_EQ(m.time.size(), 8u);
+  EXPECT_EQ(r.timing->drilling().holes, 1u);
+  EXPECT_EQ(r.timing->drilling().pecks, 2u);
+  EXPECT_EQ(r.timing->drilling().fullRetracts, 1u);
+  ASSERT_EQ(r.timing->holes().size(), 1u);
+  const HoleTime& h = r.timing->holes()[0];
+  EXPECT_EQ(h.pecks, 2u);
+  EXPECT_EQ(h.runs, 1u);
+  // Feed, retract, back down, feed, dwell 1 s, retract to Z2; not Z50 nor X10.
+  EXPECT_NEAR(h.time.model, m.time[1] + m.time[2] + m.time[3] + m.time[4] + 1 + m.time[5], 1e-12);
+  // The same in the dynamic model (the feeds are planned after they arrive).
+  MoveTimes d;
+  auto dyn =
+      run("O1\nG90 G21 G94 G00 X0 Y0 Z2.\nG01 Z-10. F600.\nG00 Z2.\nZ-9.\nG01 Z-20.\nG04 X1.\n"
+          "G00 Z2.\nZ50.\nX10.\nM30\n",
+          dynamicSetup(), &d);
+  ASSERT_EQ(dyn.timing->holes().size(), 1u);
+  EXPECT_NEAR(dyn.timing->holes()[0].time.model,
+              d.time[1] + d.time[2] + d.time[3] + d.time[4] + 1 + d.time[5], 1e-12);
+}
+
 // The per-line table keeps times only: the top blocks' program and N come from the block on
 // the line (a subprogram's line run three times, then the main program's).
 TEST(TimeReport, TopBlocksNameTheirProgramAndN) {
