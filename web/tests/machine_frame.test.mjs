@@ -58,6 +58,8 @@ test('probe-milled-bore: the moves after O5001 rewrites G54 are drawn where the 
 });
 
 test('a G10 between cuts: later moves shifted by the change, on a mill and on a lathe', async () => {
+  // A new program (not an edit of the example, which would run with the example's setup).
+  await page.selectOption('#files', '');
   await tab(page, 'setup');
   await page.fill('#setup-text', '');
   await tab(page, 'editor');

@@ -86,10 +86,13 @@ test('a lathe insert: its outline in the half-section, on the side of its tip di
 });
 
 test('a program without tool descriptions keeps the generic tool', async () => {
+  // A new program on the default mill (an edit of the lathe example would run with its setup).
+  await page.selectOption('#files', '');
   await tab(page, 'setup');
   await page.fill('#setup-text', '');
   await tab(page, 'editor');
   await typeProgram(page, 'O0001\nT1 M06\nG00 X0 Y0 Z5.\nG01 Z-1. F100.\nM30\n');
   await runAndWait(page);
+  assert.match(await page.textContent('#status'), /^ended M30/);
   assert.equal((await tool()).shape, 'generic');
 });
