@@ -162,7 +162,14 @@ std::string htmlReport(const nlohmann::json& state, const std::string& title,
           h += "<img alt=\"" + escape(file) + "\" src=\"data:image/png;base64," + base64(data) +
                "\">";
         }
-        if (p.contains("scale") && p["scale"].is_object()) {
+        if (p.contains("scale") && p["scale"].is_object() && p["scale"].contains("tolerance")) {
+          const double tol = p["scale"].value("tolerance", 0.01);
+          h += deviationScaleSvg(
+              tol,
+              fmt::format("deviation, stock - target ({}), log scale past the tolerance",
+                          stockUnits),
+              [tol](double d) { return millDeviationColour(d, tol); });
+        } else if (p.contains("scale") && p["scale"].is_object()) {
           const auto& sc = p["scale"];
           h += colourScaleSvg(
               sc.value("from", 0.0), sc.value("to", 0.0),

@@ -52,6 +52,14 @@ std::array<double, 3> heightColour(double u) {
   return c;
 }
 
+std::array<double, 3> millDeviationColour(double dev, double tol) {
+  if (std::abs(dev) <= tol) return {0.2, 0.75, 0.2};
+  // 0 at the tolerance, 1 at 10 tolerances (log scale), towards red or blue.
+  const double u = std::clamp(std::log10(std::abs(dev) / tol), 0.0, 1.0);
+  if (dev > 0) return {0.8 + 0.2 * u, 0.8 * (1 - u), 0.1};
+  return {0.1, 0.8 * (1 - u), 0.8 + 0.2 * u};
+}
+
 std::pair<float, float> heightRange(const HeightField& f) {
   float lo, hi;
   range(f, lo, hi);
@@ -116,17 +124,8 @@ RgbImage millDeviationMap(const HeightField& f, const MillTarget& target, int ma
         put(img, x, y, 0.6, 0.6, 0.6);
         continue;
       }
-      double dev = f.at(i, j) - want;
-      if (std::abs(dev) <= t) {
-        put(img, x, y, 0.2, 0.75, 0.2);
-      } else {
-        // 0 at the tolerance, 1 at 10 tolerances (log scale), towards red or blue.
-        double u = std::clamp(std::log10(std::abs(dev) / t), 0.0, 1.0);
-        if (dev > 0)
-          put(img, x, y, 0.8 + 0.2 * u, 0.8 * (1 - u), 0.1);
-        else
-          put(img, x, y, 0.1, 0.8 * (1 - u), 0.8 + 0.2 * u);
-      }
+      auto c = millDeviationColour(f.at(i, j) - want, t);
+      put(img, x, y, c[0], c[1], c[2]);
     }
   return img;
 }

@@ -19,6 +19,9 @@ namespace ncvm {
 // The height map's colours: u = 0 (lowest) dark violet, through teal and green, to u = 1
 // (highest) yellow; lightness rises with u, so it reads in grey too.
 std::array<double, 3> heightColour(double u);
+// The deviation map's colour of a deviation (stock - target) with the tolerance `tol`:
+// green within it, towards red (excess) or blue (gouge) on a log scale saturating at 10 tol.
+std::array<double, 3> millDeviationColour(double dev, double tol);
 // The lowest and highest cell of the field: the ends of the height map's scale.
 std::pair<float, float> heightRange(const HeightField& f);
 

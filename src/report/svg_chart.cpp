@@ -95,7 +95,7 @@ std::string barChartSvg(const std::vector<Bar>& bars, const std::string& axisTit
 
 std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
                            const std::function<std::array<double, 3>(double)>& colour) {
-  const double W = 520, left = 20, barW = 480, barH = 18, top = 6;
+  const double W = 560, left = 40, barW = 480, barH = 18, top = 6;
   std::string s = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"legend\" width=\"{0:.0f}\" "
       "height=\"64\" viewBox=\"0 0 {0:.0f} 64\" {1}>\n",
@@ -126,6 +126,52 @@ std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
   } else {
     s += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\">{}</text>\n", left, top + barH + 17,
                      tickLabel(from, 0.001));
+  }
+  s += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" text-anchor=\"middle\">{}</text>\n",
+                   left + barW / 2, top + barH + 36, escapeXml(axisTitle));
+  s += "</svg>\n";
+  return s;
+}
+
+std::string deviationScaleSvg(double tol, const std::string& axisTitle,
+                              const std::function<std::array<double, 3>(double)>& colour) {
+  const double W = 560, left = 40, barW = 480, barH = 18, top = 6, band = 0.2;
+  // Position in [0, 1] of a deviation: the tolerance band in the middle fifth, the rest
+  // log10(|dev| / tol) from 0 to 1 on each side.
+  auto pos = [&](double d) {
+    if (std::abs(d) <= tol) return 0.5 + band / 2 * d / tol;
+    const double u = std::clamp(std::log10(std::abs(d) / tol), 0.0, 1.0);
+    return d > 0 ? 0.5 + band / 2 + (0.5 - band / 2) * u : 0.5 - band / 2 - (0.5 - band / 2) * u;
+  };
+  auto dev = [&](double x) {  // the inverse of pos
+    if (std::abs(x - 0.5) <= band / 2) return (x - 0.5) / (band / 2) * tol;
+    const double u = (std::abs(x - 0.5) - band / 2) / (0.5 - band / 2);
+    return (x > 0.5 ? 1 : -1) * tol * std::pow(10.0, u);
+  };
+  std::string s = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"legend\" width=\"{0:.0f}\" "
+      "height=\"64\" viewBox=\"0 0 {0:.0f} 64\" {1}>\n",
+      W, kFont);
+  const int n = 80;
+  for (int k = 0; k < n; ++k) {
+    auto c = colour(dev((k + 0.5) / n));
+    s += fmt::format(
+        "<rect x=\"{:.2f}\" y=\"{:.0f}\" width=\"{:.2f}\" height=\"{:.0f}\" "
+        "fill=\"rgb({},{},{})\"/>\n",
+        left + barW * k / n, top, barW / n + 0.3, barH, std::lround(255 * c[0]),
+        std::lround(255 * c[1]), std::lround(255 * c[2]));
+  }
+  s += fmt::format(
+      "<rect x=\"{:.0f}\" y=\"{:.0f}\" width=\"{:.0f}\" height=\"{:.0f}\" fill=\"none\" "
+      "stroke=\"#333\"/>\n",
+      left, top, barW, barH);
+  const double step = niceStep(tol, 1) / 10;
+  for (double d : {-10 * tol, -tol, 0.0, tol, 10 * tol}) {
+    const double x = left + barW * pos(d);
+    s += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"{1:.0f}\" x2=\"{0:.1f}\" y2=\"{2:.0f}\" stroke=\"#333\"/>"
+        "<text x=\"{0:.1f}\" y=\"{3:.0f}\" text-anchor=\"middle\">{4}{5}</text>\n",
+        x, top + barH, top + barH + 4, top + barH + 17, d > 0 ? "+" : "", tickLabel(d, step));
   }
   s += fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" text-anchor=\"middle\">{}</text>\n",
                    left + barW / 2, top + barH + 36, escapeXml(axisTitle));

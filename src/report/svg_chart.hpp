@@ -33,4 +33,10 @@ std::string barChartSvg(const std::vector<Bar>& bars, const std::string& axisTit
 std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
                            const std::function<std::array<double, 3>(double)>& colour);
 
+// The deviation map's legend: gouge (blue) from -10 tolerances to -tol, green within
+// +-tol, excess (red) from +tol to +10 tolerances, log scale outside the band, ticks at
+// +-10 tol, +-tol and 0 with their values. colour(dev) as the map's.
+std::string deviationScaleSvg(double tol, const std::string& axisTitle,
+                              const std::function<std::array<double, 3>(double)>& colour);
+
 }  // namespace ncvm

@@ -293,7 +293,8 @@ nlohmann::json MillStock::analysis(const std::string& outDir) {
       writeFileAtomic(out("deviation.png"), encodePng(millDeviationMap(f, *tp)));
       pictures.push_back({{"file", "deviation.png"},
                           {"title", "Deviation from the target (green within tolerance)"},
-                          {"extent", extent}});
+                          {"extent", extent},
+                          {"scale", {{"quantity", "deviation"}, {"tolerance", tp->tolerance}}}});
     }
     writeFileAtomic(out("height_map.png"), encodePng(millHeightMap(f)));
     const auto [lo, hi] = heightRange(f);

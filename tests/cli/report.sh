@@ -48,6 +48,13 @@ has "$r" 'text-anchor="middle">-12</text>'
 has "$r" 'Height map (Z: violet lowest, yellow highest). Covers X (left to right) -10.000 &hellip; 35.000 mm, Y (bottom to top) -30.000 &hellip; 15.000 mm.'
 grep -q '"from": -12' "$tmp/stock/analysis.json" || fail "analysis: no height-map scale"
 
+# A target: the deviation map's legend, from -10 to +10 tolerances (0.01 mm here).
+face="$src/examples/face-milling-g42"
+"$ncvm" run "$face/face-milling-g42.nc" --setup "$face/face-milling-g42.toml" --report "$tmp/f.html" -q \
+  || fail "face milling run exit $?"
+has "$tmp/f.html" '>deviation, stock - target (mm), log scale past the tolerance</text>'
+for tick in -0.100 -0.010 0.000 +0.010 +0.100; do has "$tmp/f.html" "text-anchor=\"middle\">$tick</text>"; done
+
 # The machine model: the time is modelled, and said to be.
 "$ncvm" run "$probe/bore-o5001.nc" --setup "$src/presets/fanuc-0i-mf.toml" --setup "$probe/bore-o5001.toml" \
   --report "$tmp/d.html" -q || fail "dynamic run exit $?"
