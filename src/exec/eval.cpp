@@ -155,7 +155,8 @@ Value Executor::eval(int32_t expr) {
   // Hot path: a plain variable or constant needs no stack.
   if (r.end - r.begin == 1) {
     const Instr& in = code[r.begin];
-    if (in.op == Op::Const) return macroPrecision(Value::num(p.consts[static_cast<size_t>(in.arg)]));
+    if (in.op == Op::Const)
+      return macroPrecision(Value::num(p.consts[static_cast<size_t>(in.arg)]));
     if (in.op == Op::Var) return macroPrecision(readVar(in.arg));
   }
   Value* st = evalStack_.data();  // eval never re-enters itself: one stack serves
@@ -182,7 +183,8 @@ Value Executor::eval(int32_t expr) {
           st[sp - 1] = Value::num(-st[sp - 1].asNumber());
           break;
         case Op::Fn1:
-          st[sp - 1] = macroPrecision(Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), 0, in.arg))));
+          st[sp - 1] =
+              macroPrecision(Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), 0, in.arg))));
           break;
         case Op::Fn2:
           --sp;

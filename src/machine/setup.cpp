@@ -695,7 +695,8 @@ const ToolSpec* physicalTool(const Setup& setup, int number) {
 // ("the precision of variable values is about 8 decimal digits"); the 30i class computes in
 // double precision unless 6008#0 (F16) asks for the 16i's precision.
 int Setup::macroDigits() const {
-  const bool class16i = control == "16i" || control == "18i" || control == "21i" || control == "0i-C";
+  const bool class16i =
+      control == "16i" || control == "18i" || control == "21i" || control == "0i-C";
   return class16i || bit("6008#0") ? 8 : 0;
 }
 
