@@ -135,6 +135,19 @@ double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
   return a;
 }
 
+// The 16i class holds macro values to about 8 significant decimal digits (macroDigits_):
+// every constant, variable read and result is rounded to them, so 1 + 0.0000000001 is 1 and
+// the manual's 9876543210123.456 is 9876543200000. With 0 the values are doubles.
+Value Executor::macroPrecision(Value v) const {
+  if (!macroDigits_ || v.null || v.v == 0 || !std::isfinite(v.v)) return v;
+  const int shift = macroDigits_ - 1 - static_cast<int>(std::floor(std::log10(std::fabs(v.v))));
+  // Powers of ten up to 1e22 are exact doubles; dividing by one keeps large values exact.
+  if (shift > 300 || shift < -300) return v;
+  const double scale = std::pow(10.0, std::abs(shift));
+  v.v = shift >= 0 ? std::round(v.v * scale) / scale : std::round(v.v / scale) * scale;
+  return v;
+}
+
 Value Executor::eval(int32_t expr) {
   const Program& p = *frames_.back().prog;
   const ExprRange r = p.exprs[static_cast<size_t>(expr)];
@@ -142,8 +155,9 @@ Value Executor::eval(int32_t expr) {
   // Hot path: a plain variable or constant needs no stack.
   if (r.end - r.begin == 1) {
     const Instr& in = code[r.begin];
-    if (in.op == Op::Const) return Value::num(p.consts[static_cast<size_t>(in.arg)]);
-    if (in.op == Op::Var) return readVar(in.arg);
+    if (in.op == Op::Const)
+      return macroPrecision(Value::num(p.consts[static_cast<size_t>(in.arg)]));
+    if (in.op == Op::Var) return macroPrecision(readVar(in.arg));
   }
   Value* st = evalStack_.data();  // eval never re-enters itself: one stack serves
   int sp = 0;
@@ -153,27 +167,29 @@ Value Executor::eval(int32_t expr) {
       switch (in.op) {
         case Op::Const:
           if (sp >= kStack) throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
-          st[sp++] = Value::num(p.consts[static_cast<size_t>(in.arg)]);
+          st[sp++] = macroPrecision(Value::num(p.consts[static_cast<size_t>(in.arg)]));
           break;
         case Op::Var:
           if (sp >= kStack) throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
-          st[sp++] = readVar(in.arg);
+          st[sp++] = macroPrecision(readVar(in.arg));
           break;
         case Op::VarInd: {
           double n = st[sp - 1].asNumber();
           if (!std::isfinite(n) || std::fabs(n) > 1e9) throw AlarmError(AlarmId::VariableOutOfRange);
-          st[sp - 1] = readVar(std::llround(n));
+          st[sp - 1] = macroPrecision(readVar(std::llround(n)));
           break;
         }
         case Op::Neg:
           st[sp - 1] = Value::num(-st[sp - 1].asNumber());
           break;
         case Op::Fn1:
-          st[sp - 1] = Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), 0, in.arg)));
+          st[sp - 1] =
+              macroPrecision(Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), 0, in.arg))));
           break;
         case Op::Fn2:
           --sp;
-          st[sp - 1] = Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), st[sp].asNumber(), in.arg)));
+          st[sp - 1] = macroPrecision(
+              Value::num(checked(callFn(in.fn, st[sp - 1].asNumber(), st[sp].asNumber(), in.arg))));
           break;
         case Op::Eq:
         case Op::Ne: {
@@ -212,7 +228,7 @@ Value Executor::eval(int32_t expr) {
             case Op::Le: v = a <= b; break;
             default: break;
           }
-          st[sp - 1] = Value::num(checked(v));
+          st[sp - 1] = macroPrecision(Value::num(checked(v)));
         }
       }
     } catch (AlarmError& e) {

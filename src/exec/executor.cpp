@@ -42,6 +42,7 @@ Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
   nat_ = setup.nat();
   lrp_ = setup.lrp();
   tcs_ = setup.tcs();
+  macroDigits_ = setup.macroDigits();
   arcTolerance_ = setup.arcTolerance();
   frames_.reserve(32);
   modalCalls_.reserve(8);

@@ -247,6 +247,9 @@ class Executor {
   // input increment instead of to a whole number.
   Value evalAddress(int32_t expr, char letter);
   double roundPerUnit_ = 1;  // ROUND's steps per unit: 1 in a macro statement
+  // Significant decimal digits of every macro value and result (16i class: 8), 0 = double.
+  int macroDigits_ = 0;
+  Value macroPrecision(Value v) const;
   bool evalCond(int32_t expr);
   double callFn(Fn fn, double a, double b, int32_t arg);
 

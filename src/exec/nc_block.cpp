@@ -226,11 +226,11 @@ void Executor::deriveModal() {
 }
 
 // A block of nothing but G00/G01/G02/G03 and X Y Z F I J K R words on a mill, with no
-// cutter compensation, transform, polar coordinates (G16), canned cycle, modal call (G66), comma word (,C/,R/,A) or
-// code call of its G code in effect: of execNcGeneral's generic order only the modal G code, F and
-// the move do anything, so they run here without the walk through every other word and
-// mode (the bulk of a CAM program). Returns false, having changed nothing, for any other
-// block.
+// cutter compensation, transform, polar coordinates (G16), canned cycle, modal call (G66),
+// comma word (,C/,R/,A) or code call of its G code in effect: of execNcGeneral's generic
+// order only the modal G code, F and the move do anything, so they run here without the walk
+// through every other word and mode (the bulk of a CAM program). Returns false, having
+// changed nothing, for any other block.
 bool Executor::plainMotion(Words& w) {
   constexpr uint32_t kPlain = bit('G') | bit('X') | bit('Y') | bit('Z') | bit('F') | bit('I') |
                               bit('J') | bit('K') | bit('R');

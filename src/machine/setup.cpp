@@ -23,6 +23,7 @@ const std::map<std::string, std::string>& parameterAliases() {
       {"DPI", "3401#0"}, {"NAT", "6004#0"}, {"LRP", "1401#1"}, {"PRT", "6001#1"},
       {"TCS", "6001#5"}, {"CCV", "6001#6"}, {"CLV", "6001#7"}, {"SBM", "6000#5"},
       {"M3B", "3404#7"}, {"TVC", "0000#0"}, {"CIR", "3403#5"}, {"LGN", "5002#1"},
+      {"F16", "6008#0"},
   };
   return aliases;
 }
@@ -688,6 +689,15 @@ const ToolSpec* physicalTool(const Setup& setup, int number) {
   for (const auto& [t, spec] : setup.tools)
     if (t >= 100 && t / 100 == number) return &spec;
   return nullptr;
+}
+
+// The significant decimal digits of custom macro values: the 16i class keeps about 8
+// ("the precision of variable values is about 8 decimal digits"); the 30i class computes in
+// double precision unless 6008#0 (F16) asks for the 16i's precision.
+int Setup::macroDigits() const {
+  const bool class16i =
+      control == "16i" || control == "18i" || control == "21i" || control == "0i-C";
+  return class16i || bit("6008#0") ? 8 : 0;
 }
 
 }  // namespace ncvm

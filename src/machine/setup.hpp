@@ -174,6 +174,7 @@ struct Setup {
   bool lrp() const { return bit("1401#1"); }   // linear (not dog-leg) rapids
   bool prt() const { return bit("6001#1"); }   // DPRNT: no leading blanks
   bool tcs() const { return bit("6001#5"); }   // T code calls O9000
+  int macroDigits() const;  // significant digits of macro values, 0 = double precision
   double arcTolerance() const;                  // parameter 3410, in mm
   // Program number called by G code g through 6050-6059 (O9010-O9019), or -1.
   int gCodeCall(int g) const;
