@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "canon/arc_sweep.hpp"
+
 namespace ncvm {
 
 namespace {
@@ -56,30 +58,11 @@ void ReportRecorder::onMove(const MoveEvent& in) {
   const bool joined = haveLast_ && point(e.start) == last_;
   if (!joined) add(e.start, kind, true);
   if (e.arc) {
-    const int pu = e.plane == 18 ? 2 : e.plane == 19 ? 1 : 0;
-    const int pv = e.plane == 18 ? 0 : e.plane == 19 ? 2 : 1;
-    const int pw = 3 - pu - pv;
-    auto at = [](const AxisArray& a, int k) { return a[static_cast<size_t>(k)]; };
-    const double cu = e.center[static_cast<size_t>(pu)], cv = e.center[static_cast<size_t>(pv)];
-    const double su = at(e.start, pu) - cu, sv = at(e.start, pv) - cv;
-    const double eu = at(e.end, pu) - cu, ev = at(e.end, pv) - cv;
-    const double r0 = std::hypot(su, sv), r1 = std::hypot(eu, ev);
-    const double a0 = std::atan2(sv, su);
-    double sweep = std::atan2(ev, eu) - a0;
-    const double tau = 2 * std::numbers::pi;
-    if (e.mode == MoveMode::Ccw) {
-      while (sweep <= 1e-12) sweep += tau;  // end = start: a full circle
-    } else {
-      while (sweep >= -1e-12) sweep -= tau;
-    }
-    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / kArcStep)));
+    const ArcSweep arc = arcSweepOf(e);
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(arc.sweep) / kArcStep)));
     for (int k = 1; k < n; ++k) {
-      const double u = static_cast<double>(k) / n, ang = a0 + sweep * u;
-      const double rad = r0 + (r1 - r0) * u;
       AxisArray q = e.end;
-      q[static_cast<size_t>(pu)] = cu + rad * std::cos(ang);
-      q[static_cast<size_t>(pv)] = cv + rad * std::sin(ang);
-      q[static_cast<size_t>(pw)] = at(e.start, pw) + u * (at(e.end, pw) - at(e.start, pw));
+      arc.place(static_cast<double>(k) / n, q);
       add(q, kind, false);
     }
   } else {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "canon/arc_sweep.hpp"
 #include "report/atomic_file.hpp"
 #include "report/mill_pictures.hpp"
 #include "report/stl_writer.hpp"
@@ -89,7 +90,8 @@ void MillStock::select(int t) {
   current_ = t;
   probeRadius_ = 0;
   if (auto s = setup_.tools.find(t); s != setup_.tools.end() && s->second.type == "probe")
-    probeRadius_ = (setup_.probe.ballDiameter > 0 ? setup_.probe.ballDiameter : s->second.diameter) / 2;
+    probeRadius_ =
+        (setup_.probe.ballDiameter > 0 ? setup_.probe.ballDiameter : s->second.diameter) / 2;
   auto it = tools_.find(t);
   const MillTool* tool = it == tools_.end() ? nullptr : &it->second;
   sim_->setTool(tool);
@@ -150,40 +152,20 @@ void MillStock::onMove(const MoveEvent& work) {
 }
 
 void MillStock::arc(const MoveEvent& e, uint32_t t) {
-  // (u, v) the arc's plane, w its normal, each a right-handed cyclic order of X Y Z:
-  // G17 (X, Y, Z), G18 (Z, X, Y), G19 (Y, Z, X), so G03 is counter-clockwise in (u, v).
-  const int pu = e.plane == 18 ? 2 : e.plane == 19 ? 1 : 0;
-  const int pv = e.plane == 18 ? 0 : e.plane == 19 ? 2 : 1;
-  const int pw = 3 - pu - pv;
-  auto at = [](const AxisArray& a, int k) { return a[static_cast<size_t>(k)]; };
-  const double cu = e.center[static_cast<size_t>(pu)], cv = e.center[static_cast<size_t>(pv)];
-  const double su = at(e.start, pu) - cu, sv = at(e.start, pv) - cv;
-  const double eu = at(e.end, pu) - cu, ev = at(e.end, pv) - cv;
-  const double r0 = std::hypot(su, sv), r1 = std::hypot(eu, ev);
-  const double a0 = std::atan2(sv, su);
-  double sweep = std::atan2(ev, eu) - a0;
-  const double tau = 2 * std::numbers::pi;
-  if (e.mode == MoveMode::Ccw) {
-    while (sweep <= 1e-12) sweep += tau;  // end = start: a full circle
-  } else {
-    while (sweep >= -1e-12) sweep -= tau;
-  }
+  const ArcSweep arc = arcSweepOf(e);
   const bool rapid = e.mode == MoveMode::Rapid;
-  if (e.plane == 17 && std::abs(r1 - r0) <= 1e-9 * std::max(1.0, r0)) {
-    sim_->arcXY(cu, cv, r0, a0, sweep, e.start[2], e.end[2], rapid, t);
+  if (e.plane == 17 && std::abs(arc.r1 - arc.r0) <= 1e-9 * std::max(1.0, arc.r0)) {
+    sim_->arcXY(arc.cu, arc.cv, arc.r0, arc.a0, arc.sweep, e.start[2], e.end[2], rapid, t);
     return;
   }
   // Other planes (and spirals): chords within the helix tolerance.
-  const double r = std::max(r0, r1);
+  const double r = std::max(arc.r0, arc.r1);
   double step = r > sim_->chordTol ? 2 * std::acos(1 - sim_->chordTol / r) : std::numbers::pi / 2;
-  int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / step)));
+  int n = std::max(1, static_cast<int>(std::ceil(std::abs(arc.sweep) / step)));
   Point3 prev{e.start[0], e.start[1], e.start[2]};
   for (int k = 1; k <= n; ++k) {
-    double u = static_cast<double>(k) / n, ang = a0 + sweep * u, rad = r0 + (r1 - r0) * u;
     Point3 next{};
-    next[static_cast<size_t>(pu)] = cu + rad * std::cos(ang);
-    next[static_cast<size_t>(pv)] = cv + rad * std::sin(ang);
-    next[static_cast<size_t>(pw)] = at(e.start, pw) + u * (at(e.end, pw) - at(e.start, pw));
+    arc.place(static_cast<double>(k) / n, next);
     if (k == n) next = {e.end[0], e.end[1], e.end[2]};
     sim_->line(prev, next, rapid, t);
     prev = next;

@@ -3,7 +3,7 @@
 // colour. The link knows the model only through moveLine() and movePoints() below, so that a
 // change of how moves are stored touches these two functions only.
 import * as THREE from 'three';
-import { movePointsAt } from './model.js';
+import { movePointsAt, moveOfVertex } from './model.js';
 import { drawnPoint } from './machine_frame.js';
 
 // The program line of move i when it is in `file` (the editor's program), else 0.
@@ -128,15 +128,7 @@ export class PathLink {
       if (d < bestD) (bestD = d), (best = k);
     }
     if (best < 0) return -1;
-    // The move whose vertices hold segment `best`: the last with vFirst <= best.
-    const f = model.vFirst;
-    let lo = 0, hi = f.length - 1;
-    while (lo < hi) {
-      const mid = (lo + hi + 1) >> 1;
-      if (f[mid] <= best) lo = mid;
-      else hi = mid - 1;
-    }
-    return lo;
+    return moveOfVertex(model, best); // the move whose vertices hold segment `best`
   }
 
   pickAt(cx, cy) {

@@ -3,7 +3,7 @@
 // distance between them and dX, dY, dZ (a lathe: dX on the diameter, the distance in the
 // half-section). A third click starts a new measurement; Escape or the button ends it.
 import * as THREE from 'three';
-import { stateAt } from './model.js';
+import { stateAt, moveOfVertex } from './model.js';
 
 const SNAP_PX = 14;
 
@@ -24,17 +24,6 @@ export function measure(model, a, b) {
   return { a: pa, b: pb, d, distance: dist };
 }
 
-// The move that vertex k belongs to (the last with vFirst <= k).
-function moveOfVertex(model, k) {
-  const f = model.vFirst;
-  let lo = 0, hi = f.length - 1;
-  while (lo < hi) {
-    const mid = (lo + hi + 1) >> 1;
-    if (f[mid] <= k) lo = mid;
-    else hi = mid - 1;
-  }
-  return lo;
-}
 
 export class Measure {
   // view: the View3D; button: the toggle; panel: where the result is written.

@@ -461,3 +461,15 @@ export function timeByTool(m) {
   }
   return t;
 }
+
+// The move that vertex k belongs to (the last with vFirst <= k).
+export function moveOfVertex(model, k) {
+  const f = model.vFirst;
+  let lo = 0, hi = f.length - 1;
+  while (lo < hi) {
+    const mid = (lo + hi + 1) >> 1;
+    if (f[mid] <= k) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
+}
