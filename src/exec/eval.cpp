@@ -138,8 +138,8 @@ double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
 // The 16i class holds macro values to about 8 significant decimal digits (macroDigits_):
 // every constant, variable read and result is rounded to them, so 1 + 0.0000000001 is 1 and
 // the manual's 9876543210123.456 is 9876543200000. With 0 the values are doubles.
-Value Executor::macroPrecision(Value v) const {
-  if (!macroDigits_ || v.null || v.v == 0 || !std::isfinite(v.v)) return v;
+Value Executor::roundedToMacroDigits(Value v) const {
+  if (v.null || v.v == 0 || !std::isfinite(v.v)) return v;
   const int shift = macroDigits_ - 1 - static_cast<int>(std::floor(std::log10(std::fabs(v.v))));
   // Powers of ten up to 1e22 are exact doubles; dividing by one keeps large values exact.
   if (shift > 300 || shift < -300) return v;

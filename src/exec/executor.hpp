@@ -249,7 +249,9 @@ class Executor {
   double roundPerUnit_ = 1;  // ROUND's steps per unit: 1 in a macro statement
   // Significant decimal digits of every macro value and result (16i class: 8), 0 = double.
   int macroDigits_ = 0;
-  Value macroPrecision(Value v) const;
+  // Inline so the default (doubles) costs one test per value on the macro hot path.
+  Value macroPrecision(Value v) const { return macroDigits_ ? roundedToMacroDigits(v) : v; }
+  Value roundedToMacroDigits(Value v) const;
   bool evalCond(int32_t expr);
   double callFn(Fn fn, double a, double b, int32_t arg);
 
