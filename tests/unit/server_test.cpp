@@ -739,7 +739,7 @@ template <class T>
 void take(const std::string& p, size_t& at, size_t count, std::vector<T>* into) {
   const size_t bytes = count * sizeof(T);
   EXPECT_LE(at + bytes, p.size());
-  if (into) {
+  if (into && count) {  // memcpy from or to a null pointer is undefined even for 0 bytes
     size_t old = into->size();
     into->resize(old + count);
     std::memcpy(into->data() + old, p.data() + at, bytes);
