@@ -93,16 +93,19 @@ std::string barChartSvg(const std::vector<Bar>& bars, const std::string& axisTit
   return s;
 }
 
-std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
-                           const std::function<std::array<double, 3>(double)>& colour) {
-  const double W = 560, left = 40, barW = 480, barH = 18, top = 6;
+namespace {
+// A legend's head and its colour bar: n rectangles, each coloured by colourAt(the fraction of
+// the bar at its middle), framed; the caller adds the ticks and the title and closes it.
+constexpr double kLegendWidth = 560, kLegendLeft = 40, kLegendBarW = 480, kLegendBarH = 18,
+                 kLegendTop = 6;
+std::string legendBar(int n, const std::function<std::array<double, 3>(double)>& colourAt) {
+  const double left = kLegendLeft, barW = kLegendBarW, barH = kLegendBarH, top = kLegendTop;
   std::string s = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"legend\" width=\"{0:.0f}\" "
       "height=\"64\" viewBox=\"0 0 {0:.0f} 64\" {1}>\n",
-      W, kFont);
-  const int n = 64;
+      kLegendWidth, kFont);
   for (int k = 0; k < n; ++k) {
-    auto c = colour((k + 0.5) / n);
+    auto c = colourAt((k + 0.5) / n);
     s += fmt::format(
         "<rect x=\"{:.2f}\" y=\"{:.0f}\" width=\"{:.2f}\" height=\"{:.0f}\" "
         "fill=\"rgb({},{},{})\"/>\n",
@@ -113,6 +116,14 @@ std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
       "<rect x=\"{:.0f}\" y=\"{:.0f}\" width=\"{:.0f}\" height=\"{:.0f}\" fill=\"none\" "
       "stroke=\"#333\"/>\n",
       left, top, barW, barH);
+  return s;
+}
+}  // namespace
+
+std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
+                           const std::function<std::array<double, 3>(double)>& colour) {
+  const double left = kLegendLeft, barW = kLegendBarW, barH = kLegendBarH, top = kLegendTop;
+  std::string s = legendBar(64, colour);
   const double span = to - from;
   if (span > 0) {
     const double step = niceStep(span, 6);
@@ -135,7 +146,8 @@ std::string colourScaleSvg(double from, double to, const std::string& axisTitle,
 
 std::string deviationScaleSvg(double tol, const std::string& axisTitle,
                               const std::function<std::array<double, 3>(double)>& colour) {
-  const double W = 560, left = 40, barW = 480, barH = 18, top = 6, band = 0.2;
+  const double left = kLegendLeft, barW = kLegendBarW, barH = kLegendBarH, top = kLegendTop;
+  const double band = 0.2;
   // Position in [0, 1] of a deviation: the tolerance band in the middle fifth, the rest
   // log10(|dev| / tol) from 0 to 1 on each side.
   auto pos = [&](double d) {
@@ -148,23 +160,7 @@ std::string deviationScaleSvg(double tol, const std::string& axisTitle,
     const double u = (std::abs(x - 0.5) - band / 2) / (0.5 - band / 2);
     return (x > 0.5 ? 1 : -1) * tol * std::pow(10.0, u);
   };
-  std::string s = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"legend\" width=\"{0:.0f}\" "
-      "height=\"64\" viewBox=\"0 0 {0:.0f} 64\" {1}>\n",
-      W, kFont);
-  const int n = 80;
-  for (int k = 0; k < n; ++k) {
-    auto c = colour(dev((k + 0.5) / n));
-    s += fmt::format(
-        "<rect x=\"{:.2f}\" y=\"{:.0f}\" width=\"{:.2f}\" height=\"{:.0f}\" "
-        "fill=\"rgb({},{},{})\"/>\n",
-        left + barW * k / n, top, barW / n + 0.3, barH, std::lround(255 * c[0]),
-        std::lround(255 * c[1]), std::lround(255 * c[2]));
-  }
-  s += fmt::format(
-      "<rect x=\"{:.0f}\" y=\"{:.0f}\" width=\"{:.0f}\" height=\"{:.0f}\" fill=\"none\" "
-      "stroke=\"#333\"/>\n",
-      left, top, barW, barH);
+  std::string s = legendBar(80, [&](double x) { return colour(dev(x)); });
   const double step = niceStep(tol, 1) / 10;
   for (double d : {-10 * tol, -tol, 0.0, tol, 10 * tol}) {
     const double x = left + barW * pos(d);
