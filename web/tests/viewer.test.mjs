@@ -3,59 +3,17 @@
 //   NCVM_BIN=build/release/bin/ncvm node --test web/tests/
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { start } from './harness.mjs';
 
-const here = path.dirname(fileURLToPath(import.meta.url));
-const repo = path.resolve(here, '../..');
-const bin = process.env.NCVM_BIN || path.join(repo, 'build/release/bin/ncvm');
-const artifacts = process.env.NCVM_ARTIFACTS || path.join(repo, 'build/web-artifacts');
-const chromiumPath = process.env.NCVM_CHROMIUM || '/usr/bin/chromium';
-mkdirSync(artifacts, { recursive: true });
-
-let server, url, browser, page, profile;
-
+// The server and a fresh browser profile, as every browser test starts them (harness.mjs).
+let h, page;
 before(async () => {
-  server = spawn(bin, ['serve', '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
-  url = await new Promise((resolve, reject) => {
-    let out = '';
-    server.stdout.on('data', (d) => {
-      out += d;
-      const m = /http:\/\/\S+\//.exec(out);
-      if (m) resolve(m[0]);
-    });
-    server.on('exit', (code) => reject(new Error(`ncvm serve exited (${code})`)));
-    setTimeout(() => reject(new Error('ncvm serve did not start')), 15000);
-  });
-  profile = mkdtempSync(path.join(tmpdir(), 'ncvm-chromium-'));
-  // A fresh profile per run (Playwright passes it as --user-data-dir).
-  browser = await chromium.launchPersistentContext(profile, {
-    executablePath: chromiumPath,
-    viewport: { width: 1400, height: 820 },
-    headless: true,
-    args: [
-      '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-    ],
-  });
-  page = browser.pages()[0] || (await browser.newPage());
-  page.on('pageerror', (e) => console.error('page error:', e.message));
-  await page.goto(url);
-  await page.waitForSelector('body[data-ready="true"]');
+  h = await start();
+  page = h.page;
 });
+after(() => h?.close());
 
-after(async () => {
-  await browser?.close();
-  server?.kill('SIGTERM');
-  if (profile) rmSync(profile, { recursive: true, force: true });
-});
-
-const shot = (name) => page.screenshot({ path: path.join(artifacts, `${name}.png`) });
+const shot = (name) => h.shot(name);
 const tab = (name) => page.click(`.tabs button[data-tab="${name}"]`);
 
 async function openExample(file) {
