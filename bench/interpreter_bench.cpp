@@ -12,7 +12,8 @@ namespace {
 std::string linearProgram(int lines) {
   std::string s = "O0001\nG90 G01 F1000.\n";
   s.reserve(static_cast<size_t>(lines) * 24);
-  for (int k = 0; k < lines; ++k) s += fmt::format("X{:.3f} Y{:.3f}\n", (k % 1000) * 0.1, (k % 777) * 0.1);
+  for (int k = 0; k < lines; ++k)
+    s += fmt::format("X{:.3f} Y{:.3f}\n", (k % 1000) * 0.1, (k % 777) * 0.1);
   s += "M30\n";
   return s;
 }

@@ -155,9 +155,11 @@ std::string readFile(const fs::path& p) {
 // analysis is state.stock, no files written). `stream` streams the main program in pieces of
 // 61 bytes whatever its size.
 std::unique_ptr<ncvm::Session> caseSession(const fs::path& program, const fs::path& setupFile,
-                                           const fs::path& lib, const std::vector<std::string>& sets,
+                                           const fs::path& lib,
+                                           const std::vector<std::string>& sets,
                                            bool stream = false) {
-  ncvm::Setup setup = fs::exists(setupFile) ? ncvm::loadSetup(setupFile.string()) : ncvm::defaultSetup();
+  ncvm::Setup setup =
+      fs::exists(setupFile) ? ncvm::loadSetup(setupFile.string()) : ncvm::defaultSetup();
   for (const auto& s : sets) ncvm::applySetting(setup, s);
   auto session = std::make_unique<ncvm::Session>(setup);
   if (stream) session->streamMainProgram({0, 61});
@@ -193,9 +195,12 @@ TEST_P(Golden, Run) {
       ++no;
       line = trim(line);
       if (line.empty() || line[0] == '#') continue;
-      if (line.rfind("mode:", 0) == 0) mode = trim(line.substr(5));
-      else if (line.rfind("set:", 0) == 0) sets.push_back(trim(line.substr(4)));
-      else lines.emplace_back(no, line);
+      if (line.rfind("mode:", 0) == 0)
+        mode = trim(line.substr(5));
+      else if (line.rfind("set:", 0) == 0)
+        sets.push_back(trim(line.substr(4)));
+      else
+        lines.emplace_back(no, line);
     }
   }
 
@@ -253,7 +258,8 @@ TEST_P(Golden, Run) {
       got = walk(check, key.substr(6));
     } else if (key.rfind("count.", 0) == 0) {
       std::string type = key.substr(6);
-      got = std::count_if(trace.begin(), trace.end(), [&](const json& e) { return e["type"] == type; });
+      got = std::count_if(trace.begin(), trace.end(),
+                          [&](const json& e) { return e["type"] == type; });
     } else if (key.rfind("trace", 0) == 0) {
       // trace[3].field or trace.<type>[i].field
       std::string rest = key.substr(5);
@@ -272,8 +278,8 @@ TEST_P(Golden, Run) {
     }
     auto [want, tol] = parseValue(value);
     std::string why;
-    EXPECT_TRUE(near(got, want, tol, why)) << "got " << got.dump() << ", want " << want.dump() << " (" << why
-                                           << ")";
+    EXPECT_TRUE(near(got, want, tol, why))
+        << "got " << got.dump() << ", want " << want.dump() << " (" << why << ")";
   }
 }
 
@@ -306,7 +312,8 @@ TEST_P(GoldenStreamed, RunIsTheSame) {
   auto runOnce = [&](bool stream, bool& streamed) {
     std::unique_ptr<ncvm::Session> session = caseSession(program, setupFile, lib, sets, stream);
     streamed = session->main() && session->main()->stream;
-    ncvm::TraceWriter writer(session->files(), nullptr, 1ull << 30, session->setup().reportedAxes());
+    ncvm::TraceWriter writer(session->files(), nullptr, 1ull << 30,
+                             session->setup().reportedAxes());
     auto r = session->run(&writer);
     return writer.buffer() + "\n" + r.state.dump(1) + "\n" + r.printed;
   };
@@ -318,7 +325,9 @@ TEST_P(GoldenStreamed, RunIsTheSame) {
 }
 
 INSTANTIATE_TEST_SUITE_P(All, Golden, ::testing::ValuesIn(findCases()),
-                         [](const ::testing::TestParamInfo<GoldenCase>& i) { return i.param.name; });
+                         [](const ::testing::TestParamInfo<GoldenCase>& i) {
+                           return i.param.name;
+                         });
 INSTANTIATE_TEST_SUITE_P(All, GoldenStreamed, ::testing::ValuesIn(runCases()),
                          [](const ::testing::TestParamInfo<GoldenCase>& i) {
                            return i.param.name;

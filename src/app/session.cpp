@@ -1,9 +1,5 @@
 #include "app/session.hpp"
 
-#include "app/machine_state.hpp"
-#include "sim/stock_model.hpp"
-#include "sim/stock_probe.hpp"
-
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -11,6 +7,8 @@
 #include <filesystem>
 
 #include "app/machine_state.hpp"
+#include "sim/stock_model.hpp"
+#include "sim/stock_probe.hpp"
 #include "timing/timing_stage.hpp"
 #include "timing/timing_thread.hpp"
 
@@ -43,7 +41,8 @@ static ParseOptions parseOptionsFor(const Setup& s) {
 }
 
 Session::Session(Setup setup)
-    : setup_(std::move(setup)), store_(files_, parseOptionsFor(setup_), setup_.limits.maxFileBytes) {}
+    : setup_(std::move(setup)),
+      store_(files_, parseOptionsFor(setup_), setup_.limits.maxFileBytes) {}
 
 void Session::addProgramFile(const std::string& path) {
   ownFiles_.push_back(path);
@@ -227,7 +226,8 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   s["alarm"] = r.alarm ? alarmJson(*r.alarm, files_) : nlohmann::json(nullptr);
   s["program"] = main_->label;
   int axes = setup_.reportedAxes();
-  s["position"] = {{"work", axesJson(exec.workPosition(), axes)}, {"machine", axesJson(exec.machinePosition(), axes)}};
+  s["position"] = {{"work", axesJson(exec.workPosition(), axes)},
+                   {"machine", axesJson(exec.machinePosition(), axes)}};
   s["modal"] = modalJson(exec.modal(), setup_);
   nlohmann::json vars = nlohmann::json::object();
   for (const auto& [n, v] : exec.userVariables()) vars["#" + std::to_string(n)] = v;
@@ -251,8 +251,8 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
                              int32_t& n) {
       for (const Program& p : store_.programs()) {
         if (p.stream) {  // only its last piece is compiled: the N comes from the file
-          if (p.blocks.empty() || p.blocks.front().loc.file != file || line < p.stream->firstLine() ||
-              line > p.stream->lineBound())
+          if (p.blocks.empty() || p.blocks.front().loc.file != file ||
+              line < p.stream->firstLine() || line > p.stream->lineBound())
             continue;
           program = &p.label;
           n = p.stream->sequenceAt(line);
@@ -277,7 +277,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   s["path_length"] = {{"rapid", r.stats.rapidLength}, {"feed", r.stats.feedLength}};
   nlohmann::json warns = nlohmann::json::array();
   for (const auto& w : r.warnings)
-    warns.push_back({{"code", w.code}, {"text", w.text}, {"file", files_.name(w.loc.file)}, {"line", w.loc.line}});
+    warns.push_back({{"code", w.code},
+                     {"text", w.text},
+                     {"file", files_.name(w.loc.file)},
+                     {"line", w.loc.line}});
   s["warnings"] = warns;
   if (stock) {
     r.stock = stock->finish(stockOut_);
@@ -345,24 +348,29 @@ nlohmann::json Session::check() const {
         if (wd.letter < 'A' || wd.letter > 'Z') continue;
         uint32_t bit = 1u << (wd.letter - 'A');
         if ((seen & bit) && wd.letter != 'G' && wd.letter != 'M' && !macroCall) {
-          Alarm a{"W002", fmt::format("{} given twice in one block: the last one counts", wd.letter),
+          Alarm a{"W002",
+                  fmt::format("{} given twice in one block: the last one counts", wd.letter),
                   SourceLoc{b.loc.file, b.loc.line, wd.col}, std::nullopt, p->number};
           found.push_back({false, a});
         }
         seen |= bit;
-        bool lengthAddress = std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
-        if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P' || wd.letter == 'R')) lengthAddress = false;
+        bool lengthAddress =
+            std::string_view("XYZUVWIJKRQABC").find(wd.letter) != std::string_view::npos;
+        if (latheCycle && (wd.letter == 'Q' || wd.letter == 'P' || wd.letter == 'R'))
+          lengthAddress = false;
         if (subCall && wd.letter == 'Q') lengthAddress = false;
-        if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) && wd.value != 0) {
+        if (!dpi && lengthAddress && wd.kind == WordKind::Literal && !(wd.flags & kHasPoint) &&
+            wd.value != 0) {
           // Divided, not multiplied, by the increments per unit: 3 / 10000 prints as 0.0003,
           // 3 * 0.0001 as 0.00030000000000000003 (fmt prints the shortest exact form).
           const double perMm = setup_.increment == IncrementSystem::IsA   ? 100
                                : setup_.increment == IncrementSystem::IsC ? 10000
                                                                           : 1000;
           Alarm a{"W001",
-                  fmt::format("{}{} has no decimal point: it means {} least increments ({} mm or {} in), not {}",
-                              wd.letter, wd.value, wd.value, wd.value / perMm, wd.value / (perMm * 10),
-                              wd.value),
+                  fmt::format("{}{} has no decimal point: it means {} least increments ({} mm or "
+                              "{} in), not {}",
+                              wd.letter, wd.value, wd.value, wd.value / perMm,
+                              wd.value / (perMm * 10), wd.value),
                   SourceLoc{b.loc.file, b.loc.line, wd.col}, std::nullopt, p->number};
           found.push_back({false, a});
         }
@@ -375,7 +383,8 @@ nlohmann::json Session::check() const {
     return x.a.loc.col < y.a.loc.col;
   });
   nlohmann::json out{{"alarms", nlohmann::json::array()}, {"warnings", nlohmann::json::array()}};
-  for (const auto& f : found) out[f.alarm ? "alarms" : "warnings"].push_back(alarmJson(f.a, files_));
+  for (const auto& f : found)
+    out[f.alarm ? "alarms" : "warnings"].push_back(alarmJson(f.a, files_));
   return out;
 }
 

@@ -18,7 +18,7 @@ using AxisArray = std::array<double, kMaxAxes>;
 struct EventOrigin {
   uint32_t file = 0;
   uint32_t line = 0;
-  int32_t n = -1;            // N number of the block, -1 if none
+  int32_t n = -1;  // N number of the block, -1 if none
   const std::string* programName = nullptr;
 };
 
@@ -60,7 +60,7 @@ struct MoveEvent {
 
 struct DwellEvent {
   EventOrigin at;
-  double time = 0;  // seconds
+  double time = 0;         // seconds
   double revolutions = 0;  // when programmed in spindle revolutions, else 0
 };
 
@@ -114,9 +114,9 @@ struct AuxEvent {
 // Any write of a work or tool offset (G10, system variables, G92/G52 shifts).
 struct OffsetEvent {
   EventOrigin at;
-  std::string_view kind;   // "work", "tool_length", ...
-  std::string_view name;   // "G54", "H12 wear", ...
-  int axis = -1;           // axis slot, -1 when not per axis
+  std::string_view kind;  // "work", "tool_length", ...
+  std::string_view name;  // "G54", "H12 wear", ...
+  int axis = -1;          // axis slot, -1 when not per axis
   double value = 0;
 };
 
@@ -175,17 +175,39 @@ class EventSink {
 class FanoutSink final : public EventSink {
  public:
   void add(EventSink* s) { sinks_.push_back(s); }
-  void onMove(const MoveEvent& e) override { for (auto* s : sinks_) s->onMove(e); }
-  void onDwell(const DwellEvent& e) override { for (auto* s : sinks_) s->onDwell(e); }
-  void onMessage(const MessageEvent& e) override { for (auto* s : sinks_) s->onMessage(e); }
-  void onAlarm(const AlarmEvent& e) override { for (auto* s : sinks_) s->onAlarm(e); }
-  void onTool(const ToolEvent& e) override { for (auto* s : sinks_) s->onTool(e); }
-  void onSpindle(const SpindleEvent& e) override { for (auto* s : sinks_) s->onSpindle(e); }
-  void onCoolant(const CoolantEvent& e) override { for (auto* s : sinks_) s->onCoolant(e); }
-  void onAux(const AuxEvent& e) override { for (auto* s : sinks_) s->onAux(e); }
-  void onOffset(const OffsetEvent& e) override { for (auto* s : sinks_) s->onOffset(e); }
-  void onSkip(const SkipEvent& e) override { for (auto* s : sinks_) s->onSkip(e); }
-  void onComment(const CommentEvent& e) override { for (auto* s : sinks_) s->onComment(e); }
+  void onMove(const MoveEvent& e) override {
+    for (auto* s : sinks_) s->onMove(e);
+  }
+  void onDwell(const DwellEvent& e) override {
+    for (auto* s : sinks_) s->onDwell(e);
+  }
+  void onMessage(const MessageEvent& e) override {
+    for (auto* s : sinks_) s->onMessage(e);
+  }
+  void onAlarm(const AlarmEvent& e) override {
+    for (auto* s : sinks_) s->onAlarm(e);
+  }
+  void onTool(const ToolEvent& e) override {
+    for (auto* s : sinks_) s->onTool(e);
+  }
+  void onSpindle(const SpindleEvent& e) override {
+    for (auto* s : sinks_) s->onSpindle(e);
+  }
+  void onCoolant(const CoolantEvent& e) override {
+    for (auto* s : sinks_) s->onCoolant(e);
+  }
+  void onAux(const AuxEvent& e) override {
+    for (auto* s : sinks_) s->onAux(e);
+  }
+  void onOffset(const OffsetEvent& e) override {
+    for (auto* s : sinks_) s->onOffset(e);
+  }
+  void onSkip(const SkipEvent& e) override {
+    for (auto* s : sinks_) s->onSkip(e);
+  }
+  void onComment(const CommentEvent& e) override {
+    for (auto* s : sinks_) s->onComment(e);
+  }
   void onSignal(const SignalEvent& e) override {
     for (auto* s : sinks_) s->onSignal(e);
   }

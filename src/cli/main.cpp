@@ -2,6 +2,7 @@
 // reference tables (alarms, codes).
 // Exit status: 0 normal end, 3 alarm, 2 usage or setup error.
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -14,7 +15,6 @@
 #include <optional>
 #include <set>
 #include <thread>
-#include <unistd.h>
 
 #include "app/compare.hpp"
 #include "app/machine_state.hpp"
@@ -31,8 +31,8 @@
 #include "report/atomic_file.hpp"
 #include "report/clock_time.hpp"
 #include "report/html_report.hpp"
-#include "report/report_recorder.hpp"
 #include "report/output_folder.hpp"
+#include "report/report_recorder.hpp"
 #include "report/temp_cleanup.hpp"
 #include "report/trace_writer.hpp"
 #include "server/worker.hpp"
@@ -59,7 +59,8 @@ struct CommonOptions {
 void addSetupOptions(CLI::App* cmd, CommonOptions& o);
 
 void addCommon(CLI::App* cmd, CommonOptions& o) {
-  cmd->add_option("PROGRAM", o.programs, "program file(s), - for standard input; the first file's first program runs")
+  cmd->add_option("PROGRAM", o.programs,
+                  "program file(s), - for standard input; the first file's first program runs")
       ->required();
   addSetupOptions(cmd, o);
 }
@@ -70,7 +71,8 @@ void addSetupOptions(CLI::App* cmd, CommonOptions& o) {
       "machine and job setup (TOML, docs/setup-format.md); repeatable: later files override, "
       "e.g. a preset then the job");
   cmd->add_option("--lib", o.libs, "folder of programs for M98/G65 calls (repeatable)");
-  cmd->add_option("--set", o.sets, "override a setting: 3401#0=1, DPI=1, block_skip.1=true, limits.max_blocks=1000");
+  cmd->add_option("--set", o.sets,
+                  "override a setting: 3401#0=1, DPI=1, block_skip.1=true, limits.max_blocks=1000");
   cmd->add_flag("--no-macros", o.noMacros, "do not load the bundled macros/ folder");
 }
 
@@ -90,7 +92,8 @@ std::string readStandardInput(uint64_t maxBytes) {
   while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
     text.append(buf, got);
     if (text.size() > maxBytes)
-      throw std::runtime_error(fmt::format("standard input: larger than limits.max_file_bytes = {}", maxBytes));
+      throw std::runtime_error(
+          fmt::format("standard input: larger than limits.max_file_bytes = {}", maxBytes));
   }
   if (std::ferror(stdin))
     throw std::runtime_error(fmt::format("standard input: cannot read: {}", std::strerror(errno)));
@@ -129,8 +132,8 @@ std::string printable(std::string_view text) {
 }
 
 std::string alarmLine(const Alarm& a, const SourceFiles& files) {
-  std::string s = fmt::format("{}:{}:{}: {} {}", printable(files.name(a.loc.file)), a.loc.line, a.loc.col, a.code,
-                              printable(a.text));
+  std::string s = fmt::format("{}:{}:{}: {} {}", printable(files.name(a.loc.file)), a.loc.line,
+                              a.loc.col, a.code, printable(a.text));
   if (a.n) s += fmt::format(" (N{})", *a.n);
   return s;
 }
@@ -142,7 +145,8 @@ struct RunOutputs {
 
 // One run; what it would print goes to `out` (stdout) and `err` (stderr), so batch runs on
 // several threads can print each program's report whole, in command-line order.
-int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::string& out, std::string& err) {
+int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::string& out,
+           std::string& err) {
   auto outAt = std::back_inserter(out);
   auto errAt = std::back_inserter(err);
   const std::string& tracePath = outs.trace;
@@ -150,10 +154,11 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   const std::string& outputPath = outs.output;
   const std::string& machineStatePath = outs.machineState;
   // One output may go to standard output (-); the summary then goes to standard error.
-  const int toStdout = isStdoutPath(tracePath) + isStdoutPath(statePath) + isStdoutPath(outputPath) +
-                       isStdoutPath(outs.report);
+  const int toStdout = isStdoutPath(tracePath) + isStdoutPath(statePath) +
+                       isStdoutPath(outputPath) + isStdoutPath(outs.report);
   if (toStdout > 1)
-    throw std::runtime_error("only one of --trace, --state, --output and --report can be - (standard output)");
+    throw std::runtime_error(
+        "only one of --trace, --state, --output and --report can be - (standard output)");
   Session session(makeSetup(o));
   session.streamMainProgram(o.stream);
   loadPrograms(session, o);
@@ -181,7 +186,8 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   } else if (!outs.report.empty() && outs.stockOut.empty() && session.setup().stock.present) {
     std::string pattern = (std::filesystem::temp_directory_path() / "ncvm-report-XXXXXX").string();
     if (!::mkdtemp(pattern.data()))
-      throw std::runtime_error(fmt::format("cannot create a temporary folder: {}", std::strerror(errno)));
+      throw std::runtime_error(
+          fmt::format("cannot create a temporary folder: {}", std::strerror(errno)));
     stockDir = pattern;
     tempStock = true;
   }
@@ -192,7 +198,8 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   std::unique_ptr<TraceWriter> trace;
   if (!tracePath.empty()) {
     traceFile = std::make_unique<AtomicFile>(tracePath);
-    trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(), session.setup().limits.maxTraceBytes,
+    trace = std::make_unique<TraceWriter>(session.files(), traceFile->get(),
+                                          session.setup().limits.maxTraceBytes,
                                           session.setup().reportedAxes());
   }
   // Locked from before the read until after the write: runs sharing it take turns.
@@ -230,7 +237,8 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
       } catch (const AlarmError&) {  // a write failed: its reason is writeError()
       }
       if (int why = trace->writeError())
-        throw std::runtime_error(fmt::format("{}: cannot write the trace: {}", tracePath, std::strerror(why)));
+        throw std::runtime_error(
+            fmt::format("{}: cannot write the trace: {}", tracePath, std::strerror(why)));
       trace.reset();
       traceFile->commit();
     });
@@ -247,7 +255,8 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   if (!outs.report.empty()) {
     const Program* m = session.main();
     attempt([&] {
-      const std::string title = fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label);
+      const std::string title =
+          fmt::format("ncvm: {} ({})", session.files().name(m->loc.file), m->label);
       ReportInputs in;
       in.recorder = recorder.get();
       in.setup = &session.setup();
@@ -266,17 +275,19 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
 
   const Program* main = session.main();
   if (!quiet) {
-    fmt::format_to(outAt, "ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file), main->label,
-               endReasonName(r.end));
+    fmt::format_to(outAt, "ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file),
+                   main->label, endReasonName(r.end));
     std::string cycle = fmt::format("{} (length/feed)", clockTime(r.stats.time));
     if (session.setup().timing.dynamic && r.timing)
       cycle = fmt::format("{} (modelled), {} (length/feed)", clockTime(r.timing->total().model),
                           clockTime(r.stats.time));
-    fmt::format_to(outAt, "  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {}\n",
-               r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength,
-               r.stats.rapidLength, r.stats.feedLength, cycle);
+    fmt::format_to(
+        outAt, "  blocks {}, moves {}, path {:.3f} (rapid {:.3f}, feed {:.3f}), cycle time {}\n",
+        r.stats.blocks, r.stats.moves, r.stats.rapidLength + r.stats.feedLength,
+        r.stats.rapidLength, r.stats.feedLength, cycle);
     for (const auto& w : r.warnings)
-      fmt::format_to(outAt, "{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line, w.loc.col, w.code, w.text);
+      fmt::format_to(outAt, "{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line,
+                     w.loc.col, w.code, w.text);
     if (!tracePath.empty()) fmt::format_to(outAt, "  trace: {}\n", tracePath);
     if (!statePath.empty()) fmt::format_to(outAt, "  state: {}\n", statePath);
     if (r.stock.is_object()) {
@@ -284,13 +295,18 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
       if (st.contains("deviation") && !notMeasuredText(st["deviation"]).empty())
         fmt::format_to(outAt, "  stock: deviation {}\n", notMeasuredText(st["deviation"]));
       else if (st.contains("deviation") && st["deviation"].is_object())
-        fmt::format_to(outAt, "  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % within {}\n",
-                   st["deviation"]["max"].get<double>(), st["deviation"]["max_excess"].get<double>(),
-                   st["deviation"]["max_gouge"].get<double>(), st["deviation"]["mean"].get<double>(),
-                   100 * st["deviation"]["in_tolerance"].get<double>(), st["deviation"]["tolerance"].get<double>());
+        fmt::format_to(
+            outAt,
+            "  stock: deviation max {:.4f} (excess {:.4f}, gouge {:.4f}), mean {:.4f}, {:.1f} % "
+            "within {}\n",
+            st["deviation"]["max"].get<double>(), st["deviation"]["max_excess"].get<double>(),
+            st["deviation"]["max_gouge"].get<double>(), st["deviation"]["mean"].get<double>(),
+            100 * st["deviation"]["in_tolerance"].get<double>(),
+            st["deviation"]["tolerance"].get<double>());
       if (st.contains("collisions") && !st["collisions"].empty())
-        fmt::format_to(outAt, "  stock: {} collision(s), the first at {}:{}\n", st["collisions"].size(),
-                   st["collisions"][0].value("file", std::string()), st["collisions"][0].value("line", 0));
+        fmt::format_to(outAt, "  stock: {} collision(s), the first at {}:{}\n",
+                       st["collisions"].size(), st["collisions"][0].value("file", std::string()),
+                       st["collisions"][0].value("line", 0));
       if (!outs.stockOut.empty()) fmt::format_to(outAt, "  stock: {}\n", outs.stockOut);
     }
     if (!outs.report.empty()) fmt::format_to(outAt, "  report: {}\n", outs.report);
@@ -418,9 +434,11 @@ int checkCommand(const CommonOptions& o, bool json) {
   } else {
     for (const char* kind : {"alarms", "warnings"})
       for (const auto& a : report[kind])
-        fmt::print("{}:{}:{}: {} {}\n", printable(a["file"].get<std::string>()), a["line"].get<int>(),
-                   a["col"].get<int>(), a["code"].get<std::string>(), printable(a["text"].get<std::string>()));
-    fmt::print("ncvm check: {} alarm(s), {} warning(s)\n", report["alarms"].size(), report["warnings"].size());
+        fmt::print("{}:{}:{}: {} {}\n", printable(a["file"].get<std::string>()),
+                   a["line"].get<int>(), a["col"].get<int>(), a["code"].get<std::string>(),
+                   printable(a["text"].get<std::string>()));
+    fmt::print("ncvm check: {} alarm(s), {} warning(s)\n", report["alarms"].size(),
+               report["warnings"].size());
   }
   return report["alarms"].empty() ? kExitOk : kExitAlarm;
 }
@@ -466,11 +484,13 @@ int listCommand(const std::vector<std::string>& dirs) {
 
 void printAlarmTable() {
   fmt::print("| code | message | meaning |\n|---|---|---|\n");
-  for (const auto& a : alarmTable()) fmt::print("| {} | {} | {} |\n", alarmCode(a.id), a.message, a.meaning);
+  for (const auto& a : alarmTable())
+    fmt::print("| {} | {} | {} |\n", alarmCode(a.id), a.message, a.meaning);
 }
 
 void printCodeTable() {
-  static const char* status[] = {"supported", "accepted (no effect on the path)", "alarm PS0010 (not yet)"};
+  static const char* status[] = {"supported", "accepted (no effect on the path)",
+                                 "alarm PS0010 (not yet)"};
   static const char* series[] = {"M", "T-A", "T-B", "T-C"};
   fmt::print("| G code | series | group | status | meaning |\n|---|---|---|---|---|\n");
   for (const auto& g : gcodeTable()) {
@@ -479,7 +499,8 @@ void printCodeTable() {
       if (g.seriesMask & (1 << k)) s += (s.empty() ? "" : " ") + std::string(series[k]);
     std::string code = fmt::format("G{:02d}", g.code10 / 10);
     if (g.code10 % 10) code += fmt::format(".{}", g.code10 % 10);
-    fmt::print("| {} | {} | {} | {} | {} |\n", code, s, g.group == 0 ? std::string("00 (one-shot)") : fmt::format("{:02d}", g.group),
+    fmt::print("| {} | {} | {} | {} | {} |\n", code, s,
+               g.group == 0 ? std::string("00 (one-shot)") : fmt::format("{:02d}", g.group),
                status[static_cast<int>(g.status)], g.meaning);
   }
 }
@@ -520,23 +541,27 @@ std::optional<int> unknownCommand(CLI::App& app, int argc, char** argv) {
       best = sc->get_name();
     }
   }
-  fmt::print(stderr, "ncvm: unknown command {}{}\nncvm: the commands are {} (ncvm --help)\n", printable(word),
-             best.empty() ? "" : fmt::format(" (did you mean {}?)", best), all);
+  fmt::print(stderr, "ncvm: unknown command {}{}\nncvm: the commands are {} (ncvm --help)\n",
+             printable(word), best.empty() ? "" : fmt::format(" (did you mean {}?)", best), all);
   return kExitUsage;
 }
 
 // --help: FILE, DIR and KEY=VALUE instead of CLI11's TEXT, and the exit codes with an example.
 void describeValues(CLI::App& app) {
-  static const std::set<std::string> files = {"PROGRAM", "A", "B", "--setup", "--trace", "--state",
+  static const std::set<std::string> files = {"PROGRAM",  "A",        "B",
+                                              "--setup",  "--trace",  "--state",
                                               "--output", "--report", "--machine-state"};
   static const std::set<std::string> dirs = {"--lib", "--stock-out", "--out", "--root", "DIR"};
   static const std::set<std::string> settings = {"--set", "--vary"};
   for (CLI::App* sc : app.get_subcommands([](CLI::App*) { return true; }))
     for (CLI::Option* opt : sc->get_options()) {
       const std::string name = opt->get_name();
-      if (files.count(name)) opt->type_name("FILE");
-      else if (dirs.count(name)) opt->type_name("DIR");
-      else if (settings.count(name)) opt->type_name("KEY=VALUE");
+      if (files.count(name))
+        opt->type_name("FILE");
+      else if (dirs.count(name))
+        opt->type_name("DIR");
+      else if (settings.count(name))
+        opt->type_name("KEY=VALUE");
     }
   const std::string footer =
       "\nExit status: 0 the program ended normally (M02/M30 or its end), 3 it ended in an alarm,\n"
@@ -561,25 +586,31 @@ int main(int argc, char** argv) {
   unsigned jobs = 0;
   auto* run = app.add_subcommand("run", "run a program and report what the machine does");
   addCommon(run, runOpts);
-  run->add_option("--trace", outs.trace, "write the event trace (JSON Lines); - for standard output");
+  run->add_option("--trace", outs.trace,
+                  "write the event trace (JSON Lines); - for standard output");
   run->add_option("--state", outs.state, "write the final state (JSON); - for standard output");
   run->add_option("--output", outs.output, "file for DPRNT/BPRNT output");
-  run->add_option("--stock-out", outs.stockOut,
-                  "simulate the setup's [stock]: write the final stock, pictures and analysis.json into DIR");
-  run->add_option("--report", outs.report, "write a self-contained HTML report (summary, alarms, pictures, deviation)");
+  run->add_option(
+      "--stock-out", outs.stockOut,
+      "simulate the setup's [stock]: write the final stock, pictures and analysis.json into DIR");
+  run->add_option("--report", outs.report,
+                  "write a self-contained HTML report (summary, alarms, pictures, deviation)");
   run->add_option("--machine-state", outs.machineState,
-                  "persistent memory (#500-#999, offsets, part counters): loaded if it exists, saved after the run");
+                  "persistent memory (#500-#999, offsets, part counters): loaded if it exists, "
+                  "saved after the run");
   run->add_option("--lock-wait", outs.lockWait,
                   "seconds to wait while another run holds the --machine-state file (default 60)")
       ->check(CLI::Range(0.0, 86400.0));
   run->add_flag("-q,--quiet", quiet, "print only alarms");
-  run->add_flag("--batch", batch,
-                "run every PROGRAM file as a program of its own, in parallel; --trace, --state and --output "
-                "then name folders (STEM.jsonl, STEM.json, STEM.txt)");
+  run->add_flag(
+      "--batch", batch,
+      "run every PROGRAM file as a program of its own, in parallel; --trace, --state and --output "
+      "then name folders (STEM.jsonl, STEM.json, STEM.txt)");
   run->add_option("-j,--jobs", jobs, "threads for --batch (default: all cores)");
-  run->add_option("--stream-min-bytes", runOpts.stream.minBytes,
-                  "compile a main program file of at least this size while it runs, a piece at a time, "
-                  "when it has no macro statements (default 4194304; docs/performance.md)");
+  run->add_option(
+      "--stream-min-bytes", runOpts.stream.minBytes,
+      "compile a main program file of at least this size while it runs, a piece at a time, "
+      "when it has no macro statements (default 4194304; docs/performance.md)");
   run->add_option("--stream-piece-bytes", runOpts.stream.pieceBytes,
                   "size of those pieces (default 65536)")
       ->check(CLI::Range(size_t{1}, size_t{1} << 30));

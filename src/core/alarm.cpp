@@ -14,10 +14,12 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::IllegalDecimalPoint, "ILLEGAL USE OF DECIMAL POINT",
        "A decimal point on an address that forbids it (P, M, S, T, H, D, L, N, O), or two points."},
       {AlarmId::ImproperAddress, "IMPROPER NC-ADDRESS",
-       "A character that is not an address of this control (lower case, unknown letter, an axis the "
+       "A character that is not an address of this control (lower case, unknown letter, an axis "
+       "the "
        "machine lacks)."},
       {AlarmId::ImproperGCode, "IMPROPER G-CODE",
-       "A G code the control does not have, or one ncvm does not support yet (the text says which)."},
+       "A G code the control does not have, or one ncvm does not support yet (the text says "
+       "which)."},
       {AlarmId::FeedZero, "FEED ZERO (COMMAND)", "A cutting move with F = 0 or no F ever given."},
       {AlarmId::OverToleranceOfRadius, "OVER TOLERANCE OF RADIUS",
        "Arc end point radius differs from the start radius by more than parameter 3410."},
@@ -25,15 +27,19 @@ const std::vector<AlarmInfo>& alarmTable() {
        "An arc with an axis that is not in the selected plane."},
       {AlarmId::NoRadiusOrCenter, "R OR I,J,K COMMAND NOT FOUND", "An arc without R or I/J/K."},
       {AlarmId::CircleInRapid, "CIRCLE CUT IN RAPID (F0)", "An arc in rapid or with F0."},
-      {AlarmId::IllegalOffsetNumber, "ILLEGAL OFFSET NUMBER", "An H, D or T offset number out of range."},
-      {AlarmId::IllegalPInG10, "ILLEGAL P COMMAND IN G10", "G10 with an L or P it does not accept."},
-      {AlarmId::IllegalOffsetValueInG10, "ILLEGAL OFFSET VALUE IN G10", "G10 with a value out of range."},
+      {AlarmId::IllegalOffsetNumber, "ILLEGAL OFFSET NUMBER",
+       "An H, D or T offset number out of range."},
+      {AlarmId::IllegalPInG10, "ILLEGAL P COMMAND IN G10",
+       "G10 with an L or P it does not accept."},
+      {AlarmId::IllegalOffsetValueInG10, "ILLEGAL OFFSET VALUE IN G10",
+       "G10 with a value out of range."},
       {AlarmId::NoIntersectionCrc, "NO INTERSECTION AT CUTTER COMPENSATION",
        "Cutter compensation C cannot place a corner: the offset paths do not meet, or the cutter "
        "radius is larger than an inner arc."},
       {AlarmId::NoCircInStartupCancel, "NO CIRC ALLOWED IN STUP/EXT BLK",
        "G02/G03 in the block that starts (G41/G42) or cancels (G40, D0) cutter compensation."},
-      {AlarmId::CannotG31InCompensation, "CAN NOT COMMANDED G31", "G31 while cutter compensation is on."},
+      {AlarmId::CannotG31InCompensation, "CAN NOT COMMANDED G31",
+       "G31 while cutter compensation is on."},
       {AlarmId::CannotChangePlaneInCrc, "CAN NOT CHANGE PLANE IN G41/G42",
        "G17/G18/G19 while cutter compensation vectors are in effect."},
       {AlarmId::InterferenceInCircular, "INTERFERENCE IN CIRCULAR BLOCK",
@@ -42,12 +48,16 @@ const std::vector<AlarmInfo>& alarmTable() {
        "A compensated block would run against its programmed direction (a step or groove "
        "smaller than the cutter radius): the tool would overcut."},
       {AlarmId::ChamferInStartupCancel, "CHF/CNR NOT ALLOWED IN G41,G42",
-       "Chamfer or corner rounding (,C ,R) in the block that starts or cancels cutter compensation."},
+       "Chamfer or corner rounding (,C ,R) in the block that starts or cancels cutter "
+       "compensation."},
       {AlarmId::G45G48InCrc, "G45/G48 NOT ALLOWED IN CRC",
        "G45-G48 (tool position offset) while cutter compensation is on."},
-      {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC", "G27-G30 in canned-cycle mode."},
-      {AlarmId::QNotFound, "ADDRESS Q NOT FOUND (G73/G83)", "G73 or G83 without a peck depth Q (or Q0)."},
-      {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND", "G30 with P other than 2-4."},
+      {AlarmId::G27to30InCycle, "G27-G30 NOT ALLOWED IN FIXED CYC",
+       "G27-G30 in canned-cycle mode."},
+      {AlarmId::QNotFound, "ADDRESS Q NOT FOUND (G73/G83)",
+       "G73 or G83 without a peck depth Q (or Q0)."},
+      {AlarmId::IllegalReferenceReturn, "ILLEGAL REFERENCE RETURN COMMAND",
+       "G30 with P other than 2-4."},
       {AlarmId::MissingMoveAfterChamfer, "MISSING MOVE AFTER CNR/CHF",
        "The block after a ,C or ,R block does not move in the same plane (no move, another "
        "plane, a non-moving block, the end of the program)."},
@@ -90,18 +100,22 @@ const std::vector<AlarmInfo>& alarmTable() {
        "library."},
       {AlarmId::TooManySubNesting, "TOO MANY SUB,MACRO NESTING",
        "More nested subprogram calls than the control allows."},
-      {AlarmId::SequenceNotFound, "SEQUENCE NUMBER NOT FOUND", "M99 P names a sequence number that the "
-                                                                "caller lacks, or M98 Q one the called "
-                                                                "program lacks."},
-      {AlarmId::IntegerOverflow, "OVERFLOW :INTEGER", "An integer value out of range (BIN, BCD, AND/OR/XOR, "
-                                                      "M/S/T/H/D values)."},
-      {AlarmId::FloatOverflow, "OVERFLOW :FLOATING", "A result too large (EXP, POW, huge operands, NaN)."},
+      {AlarmId::SequenceNotFound, "SEQUENCE NUMBER NOT FOUND",
+       "M99 P names a sequence number that the "
+       "caller lacks, or M98 Q one the called "
+       "program lacks."},
+      {AlarmId::IntegerOverflow, "OVERFLOW :INTEGER",
+       "An integer value out of range (BIN, BCD, AND/OR/XOR, "
+       "M/S/T/H/D values)."},
+      {AlarmId::FloatOverflow, "OVERFLOW :FLOATING",
+       "A result too large (EXP, POW, huge operands, NaN)."},
       {AlarmId::ZeroDivide, "ZERO DIVIDE", "Division by zero (also TAN of 90 degrees)."},
       {AlarmId::ImproperCommand, "IMPROPER COMMAND", "A function that cannot be used here."},
       {AlarmId::IllegalExpressionFormat, "ILLEGAL EXPRESSION FORMAT",
        "Bad expression syntax; a condition used as a value or a value used as a condition."},
-      {AlarmId::VariableOutOfRange, "VARIABLE NO. OUT OF RANGE", "A variable number the control does not "
-                                                                 "have."},
+      {AlarmId::VariableOutOfRange, "VARIABLE NO. OUT OF RANGE",
+       "A variable number the control does not "
+       "have."},
       {AlarmId::WriteProtectedVariable, "WRITE PROTECTED VARIABLE",
        "An assignment to #0 or to a read-only system variable."},
       {AlarmId::TooManyBrackets, "TOO MANY BRACKET NESTING",
@@ -111,13 +125,15 @@ const std::vector<AlarmInfo>& alarmTable() {
        "less, ...)."},
       {AlarmId::TooManyMacroNesting, "TOO MANY MACRO NESTING",
        "More nested macro calls (G65, G66, code calls) than the control allows."},
-      {AlarmId::MissingEnd, "MISSING END STATEMENT", "A WHILE/DO without its END (found before running)."},
+      {AlarmId::MissingEnd, "MISSING END STATEMENT",
+       "A WHILE/DO without its END (found before running)."},
       {AlarmId::MacroStatementFormat, "MACRO STATEMENT FORMAT ERROR",
        "A macro statement that is not well formed (IF without GOTO/THEN, bad DPRNT, ...)."},
       {AlarmId::IllegalLoopNumber, "ILLEGAL LOOP NUMBER",
        "DO/END number outside 1-3, loops crossing, END without DO, or a jump into a loop."},
-      {AlarmId::DuplicateNcMacro, "DUPLICATE NC,MACRO STATEMENT", "NC words and a macro statement in one "
-                                                                  "block."},
+      {AlarmId::DuplicateNcMacro, "DUPLICATE NC,MACRO STATEMENT",
+       "NC words and a macro statement in one "
+       "block."},
       {AlarmId::IllegalMacroSequence, "ILLEGAL MACRO SEQUENCE NUMBER",
        "GOTO to a sequence number that is not in the program or out of 1-99999."},
       {AlarmId::GAsArgument, "USE 'G' AS ARGUMENT", "G used as an argument of G65/G66."},
@@ -131,24 +147,29 @@ const std::vector<AlarmInfo>& alarmTable() {
       {AlarmId::DirectDrawingPlane, "ILLEGAL PLANE SELECT",
        "Direct drawing dimensions (lathe ,A) outside the Z-X plane (G18)."},
       {AlarmId::OvertravelPlus, "+ OVERTRAVEL ( SOFT 1 )",
-       "A move would pass an axis' upper stroke limit (axes.<X>.max); it is refused before it starts."},
+       "A move would pass an axis' upper stroke limit (axes.<X>.max); it is refused before it "
+       "starts."},
       {AlarmId::OvertravelMinus, "- OVERTRAVEL ( SOFT 1 )",
-       "A move would pass an axis' lower stroke limit (axes.<X>.min); it is refused before it starts."},
+       "A move would pass an axis' lower stroke limit (axes.<X>.min); it is refused before it "
+       "starts."},
       {AlarmId::BlockLimit, "BLOCK LIMIT REACHED",
        "ncvm: the run executed more blocks than limits.max_blocks (runaway program)."},
       {AlarmId::TimeLimit, "TIME LIMIT REACHED",
        "ncvm: the simulated machine time passed limits.max_time_s (runaway program)."},
-      {AlarmId::OutputError, "OUTPUT FILE ERROR", "ncvm: an output file (DPRNT, trace) could not be "
-                                                  "written."},
+      {AlarmId::OutputError, "OUTPUT FILE ERROR",
+       "ncvm: an output file (DPRNT, trace) could not be "
+       "written."},
       {AlarmId::LineTooLong, "LINE TOO LONG", "ncvm: a block longer than limits.max_line_length."},
-      {AlarmId::ProgramTooLarge, "PROGRAM TOO LARGE", "ncvm: a file larger than limits.max_file_bytes."},
+      {AlarmId::ProgramTooLarge, "PROGRAM TOO LARGE",
+       "ncvm: a file larger than limits.max_file_bytes."},
       {AlarmId::SkipNotReceived, "SKIP SIGNAL NOT RECEIVED",
        "ncvm: a G31 touched nothing while probe.miss_alarm is set (a real control ends the move "
        "normally; the option makes a missed probe visible)."},
       {AlarmId::SignalNotGiven, "SIGNAL NOT IN SETUP",
        "ncvm: the program read an interface signal input (#1000-#1032) that the setup's [signals] "
        "does not give, while signals.missing = \"alarm\"."},
-      {AlarmId::TraceLimit, "TRACE LIMIT REACHED", "ncvm: the trace grew past limits.max_trace_bytes."},
+      {AlarmId::TraceLimit, "TRACE LIMIT REACHED",
+       "ncvm: the trace grew past limits.max_trace_bytes."},
       {AlarmId::ProgramFileChanged, "PROGRAM FILE CHANGED",
        "ncvm: a streamed program's file was changed while it ran and ncvm had to read it again."},
       {AlarmId::NoProgramText, "NO PROGRAM IN FILE",

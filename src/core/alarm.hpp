@@ -108,8 +108,8 @@ const char* alarmMessage(AlarmId id);
 std::string alarmCode(AlarmId id);  // "PS0112"
 
 struct Alarm {
-  std::string code;    // "PS0112", "MC3001"
-  std::string text;    // message shown by the control (plus ncvm's detail, if any)
+  std::string code;  // "PS0112", "MC3001"
+  std::string text;  // message shown by the control (plus ncvm's detail, if any)
   SourceLoc loc;
   std::optional<int64_t> n;  // N number of the block, if it had one
   int32_t program = -1;      // O number, -1 if unknown

@@ -26,13 +26,15 @@ int64_t Executor::offsetNm(double v, bool point, int slot) const {
 void Executor::initMemoryFromSetup() {
   for (const auto& [index, values] : setup_.workOffsets)
     for (int k = 0; k < kMaxAxes; ++k)
-      mem_.work[static_cast<size_t>(index)][static_cast<size_t>(k)] = offsetNm(values[static_cast<size_t>(k)], true, k);
+      mem_.work[static_cast<size_t>(index)][static_cast<size_t>(k)] =
+          offsetNm(values[static_cast<size_t>(k)], true, k);
   for (const auto& [row, spec] : setup_.toolOffsets) {
     ToolOffsetRow& r = mem_.tools[static_cast<size_t>(row)];
     for (int f = 0; f < 4; ++f) {
       // Mill H/D and lathe Z/R/Y are plain lengths; lathe X is entered as a diameter.
       int slot = (lathe_ && f == kFieldXorH) ? 0 : 2;
-      r.geometry[static_cast<size_t>(f)] = offsetNm(spec.geometry[static_cast<size_t>(f)], true, slot);
+      r.geometry[static_cast<size_t>(f)] =
+          offsetNm(spec.geometry[static_cast<size_t>(f)], true, slot);
       r.wear[static_cast<size_t>(f)] = offsetNm(spec.wear[static_cast<size_t>(f)], true, slot);
     }
     r.tip = spec.tip;
@@ -44,14 +46,15 @@ void Executor::initMemoryFromSetup() {
 AxisArray Executor::workOffsetValues(int index) const {
   AxisArray out{};
   for (int k = 0; k < kMaxAxes; ++k)
-    out[static_cast<size_t>(k)] = toProgramUnits(mem_.work[static_cast<size_t>(index)][static_cast<size_t>(k)], k, true);
+    out[static_cast<size_t>(k)] =
+        toProgramUnits(mem_.work[static_cast<size_t>(index)][static_cast<size_t>(k)], k, true);
   return out;
 }
 
 void Executor::recomputeOffset() {
   for (size_t k = 0; k < kMaxAxes; ++k)
-    offset_[k] = mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(workIndex_)][k] + g52_[k] + g92_[k] +
-                 toolShift_[k];
+    offset_[k] = mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(workIndex_)][k] + g52_[k] +
+                 g92_[k] + toolShift_[k];
   // The stock model places the moves on the machine with the work origin (a tool offset
   // moves the tip, not work zero): tell it when that changes.
   std::array<int64_t, 3> origin{};
@@ -65,31 +68,38 @@ void Executor::recomputeOffset() {
 void Executor::writeWorkOffset(int index, int slot, int64_t nm, bool add) {
   auto& cell = mem_.work[static_cast<size_t>(index)][static_cast<size_t>(slot)];
   int64_t value = add ? cell + nm : nm;
-  if (value > kMaxWorkOffsetNm || value < -kMaxWorkOffsetNm) throw AlarmError(AlarmId::IllegalOffsetValueInG10);
+  if (value > kMaxWorkOffsetNm || value < -kMaxWorkOffsetNm)
+    throw AlarmError(AlarmId::IllegalOffsetValueInG10);
   cell = value;
   recomputeOffset();
   eventName_ = workOffsetName(index);
-  sink().onOffset(OffsetEvent{origin_, "work", eventName_, slot, toProgramUnits(value, slot, true)});
+  sink().onOffset(
+      OffsetEvent{origin_, "work", eventName_, slot, toProgramUnits(value, slot, true)});
 }
 
 void Executor::writeToolOffset(int row, int field, bool wear, int64_t nm, bool add) {
-  if (row < 1 || row >= kToolRows) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("{}", row));
+  if (row < 1 || row >= kToolRows)
+    throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("{}", row));
   ToolOffsetRow& r = mem_.tools[static_cast<size_t>(row)];
   int64_t& cell = (wear ? r.wear : r.geometry)[static_cast<size_t>(field)];
   int64_t value = add ? cell + nm : nm;
-  if (value > kMaxToolOffsetNm || value < -kMaxToolOffsetNm) throw AlarmError(AlarmId::IllegalOffsetValueInG10);
+  if (value > kMaxToolOffsetNm || value < -kMaxToolOffsetNm)
+    throw AlarmError(AlarmId::IllegalOffsetValueInG10);
   cell = value;
   static const char* millNames[] = {"H", "", "D", ""};
   static const char* latheNames[] = {"X", "Z", "R", "Y"};
-  eventName_ = fmt::format("{}{} {}", lathe_ ? latheNames[field] : millNames[field], row, wear ? "wear" : "geometry");
+  eventName_ = fmt::format("{}{} {}", lathe_ ? latheNames[field] : millNames[field], row,
+                           wear ? "wear" : "geometry");
   int slot = (lathe_ && field == kFieldXorH) ? 0 : 2;
   sink().onOffset(OffsetEvent{origin_, "tool", eventName_, -1, toProgramUnits(value, slot, true)});
   applyToolShift();
 }
 
 void Executor::setTip(int row, int tip) {
-  if (row < 1 || row >= kToolRows) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("{}", row));
-  if (tip < 0 || tip > kMaxTipDirection) throw AlarmError(AlarmId::IllegalOffsetValueInG10, "imaginary tip 0-9");
+  if (row < 1 || row >= kToolRows)
+    throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("{}", row));
+  if (tip < 0 || tip > kMaxTipDirection)
+    throw AlarmError(AlarmId::IllegalOffsetValueInG10, "imaginary tip 0-9");
   mem_.tools[static_cast<size_t>(row)].tip = tip;
   eventName_ = fmt::format("T{} tip", row);
   sink().onOffset(OffsetEvent{origin_, "tool", eventName_, -1, static_cast<double>(tip)});
@@ -227,7 +237,8 @@ void Executor::localCoordinates(const Words& w) {
     char a = kAxisLetters[k];
     g52_[static_cast<size_t>(k)] = offsetNm(w.value(a), w.hasPoint(a), k);
     eventName_ = "G52";
-    sink().onOffset(OffsetEvent{origin_, "local", eventName_, k, toProgramUnits(g52_[static_cast<size_t>(k)], k, true)});
+    sink().onOffset(OffsetEvent{origin_, "local", eventName_, k,
+                                toProgramUnits(g52_[static_cast<size_t>(k)], k, true)});
   }
   recomputeOffset();
   for (size_t k = 0; k < kMaxAxes; ++k) programmed_[k] = machine_[k] - offset_[k];
@@ -268,7 +279,8 @@ void Executor::coordinatePreset(const Words& w) {
   for (int k = 0; k < kMaxAxes; ++k) {
     auto s = static_cast<size_t>(k);
     if (!setup_.axes[s].present || !w.has(kAxisLetters[k])) continue;
-    if (w.value(kAxisLetters[k]) != 0) throw AlarmError(AlarmId::ImproperGCode, "G92.1 takes IP0 only");
+    if (w.value(kAxisLetters[k]) != 0)
+      throw AlarmError(AlarmId::ImproperGCode, "G92.1 takes IP0 only");
     g92_[s] = 0;
     g52_[s] = 0;
     eventName_ = "G92";
@@ -293,9 +305,11 @@ void Executor::checkStroke(const std::array<int64_t, kMaxAxes>& toMachine) {
     double pos = toProgramUnits(toMachine[static_cast<size_t>(k)], k, true);
     double unit = (modal_.unit == InputUnit::Inch && !a.rotary) ? 25.4 : 1.0;  // limits in mm / deg
     if (pos * unit > a.max + 1e-9)
-      throw AlarmError(AlarmId::OvertravelPlus, fmt::format("{} {:.3f} > {:.3f}", a.name, pos * unit, a.max));
+      throw AlarmError(AlarmId::OvertravelPlus,
+                       fmt::format("{} {:.3f} > {:.3f}", a.name, pos * unit, a.max));
     if (pos * unit < a.min - 1e-9)
-      throw AlarmError(AlarmId::OvertravelMinus, fmt::format("{} {:.3f} < {:.3f}", a.name, pos * unit, a.min));
+      throw AlarmError(AlarmId::OvertravelMinus,
+                       fmt::format("{} {:.3f} < {:.3f}", a.name, pos * unit, a.min));
   }
 }
 
@@ -303,12 +317,14 @@ void Executor::checkStroke(const std::array<int64_t, kMaxAxes>& toMachine) {
 bool Executor::offsetVariable(int64_t n, Value* read, const Value* write) {
   auto axisOf = [&](int64_t k) {
     int slot = axisByNumber(static_cast<int>(k) + 1);
-    if (slot < 0) throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
+    if (slot < 0)
+      throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
     return slot;
   };
   auto workVar = [&](int index, int slot) {
     if (read) {
-      *read = Value::num(toProgramUnits(mem_.work[static_cast<size_t>(index)][static_cast<size_t>(slot)], slot, true));
+      *read = Value::num(toProgramUnits(
+          mem_.work[static_cast<size_t>(index)][static_cast<size_t>(slot)], slot, true));
     } else {
       writeWorkOffset(index, slot, offsetNm(write->asNumber(), true, slot), false);
     }
@@ -318,14 +334,18 @@ bool Executor::offsetVariable(int64_t n, Value* read, const Value* write) {
     int table = static_cast<int>((n - 5201) / 20);
     if (table <= 6) return workVar(table, axisOf((n - 5201) % 20));
   }
-  if (!lathe_ && n >= 7001 && n <= 7960) return workVar(kWorkP1 + static_cast<int>((n - 7001) / 20), axisOf((n - 7001) % 20));
-  if (!lathe_ && n >= 14001 && n <= 19980) return workVar(kWorkP1 + static_cast<int>((n - 14001) / 20), axisOf((n - 14001) % 20));
+  if (!lathe_ && n >= 7001 && n <= 7960)
+    return workVar(kWorkP1 + static_cast<int>((n - 7001) / 20), axisOf((n - 7001) % 20));
+  if (!lathe_ && n >= 14001 && n <= 19980)
+    return workVar(kWorkP1 + static_cast<int>((n - 14001) / 20), axisOf((n - 14001) % 20));
 
   auto toolVar = [&](int row, int field, bool wear, int slot) {
-    if (row < 1 || row >= kToolRows) throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+    if (row < 1 || row >= kToolRows)
+      throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
     if (read) {
       const ToolOffsetRow& r = mem_.tools[static_cast<size_t>(row)];
-      *read = Value::num(toProgramUnits((wear ? r.wear : r.geometry)[static_cast<size_t>(field)], slot, true));
+      *read = Value::num(
+          toProgramUnits((wear ? r.wear : r.geometry)[static_cast<size_t>(field)], slot, true));
     } else {
       writeToolOffset(row, field, wear, offsetNm(write->asNumber(), true, slot), false);
     }
@@ -336,7 +356,8 @@ bool Executor::offsetVariable(int64_t n, Value* read, const Value* write) {
     // #2001-#2800 banks alias the first 200 of each.
     if (n >= 10001 && n <= 13999 && n % 1000 != 0) {
       int bank = static_cast<int>(n / 1000) - 10;
-      return toolVar(static_cast<int>(n % 1000), bank < 2 ? kFieldXorH : kFieldRorD, bank % 2 == 0, 2);
+      return toolVar(static_cast<int>(n % 1000), bank < 2 ? kFieldXorH : kFieldRorD, bank % 2 == 0,
+                     2);
     }
     if (n >= 2001 && n <= 2800) {
       int bank = static_cast<int>((n - 2001) / 200);
@@ -350,18 +371,28 @@ bool Executor::offsetVariable(int64_t n, Value* read, const Value* write) {
     int row = static_cast<int>((n - 2001) % 100) + 1;
     if (row > 64) return false;
     switch (bank) {
-      case 0: return toolVar(row, kFieldXorH, true, 0);
-      case 1: return toolVar(row, kFieldZ, true, 2);
-      case 2: return toolVar(row, kFieldRorD, true, 2);
+      case 0:
+        return toolVar(row, kFieldXorH, true, 0);
+      case 1:
+        return toolVar(row, kFieldZ, true, 2);
+      case 2:
+        return toolVar(row, kFieldRorD, true, 2);
       case 3:
-        if (read) *read = Value::num(mem_.tools[static_cast<size_t>(row)].tip);
-        else setTip(row, static_cast<int>(std::llround(write->asNumber())));
+        if (read)
+          *read = Value::num(mem_.tools[static_cast<size_t>(row)].tip);
+        else
+          setTip(row, static_cast<int>(std::llround(write->asNumber())));
         return true;
-      case 4: return toolVar(row, kFieldY, true, 1);
-      case 7: return toolVar(row, kFieldXorH, false, 0);
-      case 8: return toolVar(row, kFieldZ, false, 2);
-      case 9: return toolVar(row, kFieldRorD, false, 2);
-      default: return false;
+      case 4:
+        return toolVar(row, kFieldY, true, 1);
+      case 7:
+        return toolVar(row, kFieldXorH, false, 0);
+      case 8:
+        return toolVar(row, kFieldZ, false, 2);
+      case 9:
+        return toolVar(row, kFieldRorD, false, 2);
+      default:
+        return false;
     }
   }
   return false;

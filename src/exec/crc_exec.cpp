@@ -25,8 +25,12 @@ PlaneIdx planeIdx(int plane) {
 }  // namespace
 
 // Events produced while blocks are deferred become actions that replay them later.
-void Executor::DeferSink::onMove(const MoveEvent& e) { ex->deferEvent([e](EventSink& s) { s.onMove(e); }); }
-void Executor::DeferSink::onDwell(const DwellEvent& e) { ex->deferEvent([e](EventSink& s) { s.onDwell(e); }); }
+void Executor::DeferSink::onMove(const MoveEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onMove(e); });
+}
+void Executor::DeferSink::onDwell(const DwellEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onDwell(e); });
+}
 void Executor::DeferSink::onMessage(const MessageEvent& e) {
   std::string text(e.text), source(e.source);
   EventOrigin at = e.at;
@@ -37,10 +41,18 @@ void Executor::DeferSink::onAlarm(const AlarmEvent& e) {
   EventOrigin at = e.at;
   ex->deferEvent([at, code, text](EventSink& s) { s.onAlarm(AlarmEvent{at, code, text}); });
 }
-void Executor::DeferSink::onTool(const ToolEvent& e) { ex->deferEvent([e](EventSink& s) { s.onTool(e); }); }
-void Executor::DeferSink::onSpindle(const SpindleEvent& e) { ex->deferEvent([e](EventSink& s) { s.onSpindle(e); }); }
-void Executor::DeferSink::onCoolant(const CoolantEvent& e) { ex->deferEvent([e](EventSink& s) { s.onCoolant(e); }); }
-void Executor::DeferSink::onAux(const AuxEvent& e) { ex->deferEvent([e](EventSink& s) { s.onAux(e); }); }
+void Executor::DeferSink::onTool(const ToolEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onTool(e); });
+}
+void Executor::DeferSink::onSpindle(const SpindleEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onSpindle(e); });
+}
+void Executor::DeferSink::onCoolant(const CoolantEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onCoolant(e); });
+}
+void Executor::DeferSink::onAux(const AuxEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onAux(e); });
+}
 void Executor::DeferSink::onOffset(const OffsetEvent& e) {
   std::string kind(e.kind), name(e.name);
   OffsetEvent copy = e;
@@ -54,7 +66,9 @@ void Executor::DeferSink::onOffset(const OffsetEvent& e) {
 void Executor::DeferSink::onSignal(const SignalEvent& e) {
   ex->deferEvent([e](EventSink& s) { s.onSignal(e); });
 }
-void Executor::DeferSink::onSkip(const SkipEvent& e) { ex->deferEvent([e](EventSink& s) { s.onSkip(e); }); }
+void Executor::DeferSink::onSkip(const SkipEvent& e) {
+  ex->deferEvent([e](EventSink& s) { s.onSkip(e); });
+}
 void Executor::DeferSink::onWorkOrigin(const WorkOriginEvent& e) {
   ex->deferEvent([e](EventSink& s) { s.onWorkOrigin(e); });
 }
@@ -70,7 +84,9 @@ void Executor::deferEvent(std::function<void(EventSink&)> replay) {
   pending_.push_back(std::move(p));
 }
 
-bool Executor::crcBusy() const { return !pending_.empty() || (crc_ && crc_->active()); }
+bool Executor::crcBusy() const {
+  return !pending_.empty() || (crc_ && crc_->active());
+}
 
 double Executor::crcRadius() const {
   if (lathe_) return tnrcRadius();
@@ -122,7 +138,9 @@ void Executor::releasePending(bool all) {
     for (size_t k = 0; k < cur.segs.size(); ++k) {
       const crc::OutSeg& o = cur.segs[k];
       // A G39 corner arc is the G39 block's motion.
-      origin_ = (k == 0 && o.inserted && o.kind != crc::Kind::Line && info.cornerArc) ? info.cornerOrigin : info.origin;
+      origin_ = (k == 0 && o.inserted && o.kind != crc::Kind::Line && info.cornerArc)
+                    ? info.cornerOrigin
+                    : info.origin;
       std::array<int64_t, kMaxAxes> target{};
       for (size_t a = 0; a < kMaxAxes; ++a) target[a] = machine_[a] - offset_[a];
       // The block's other axes arrive with its last piece.
@@ -172,15 +190,18 @@ void Executor::crcDrain() {
 // Mirror, scaling and rotation act before compensation: the compensator sees the
 // transformed path (a reflection swaps G41/G42 and G02/G03) and D is never scaled.
 // Returns the transformed end point.
-std::array<int64_t, kMaxAxes> Executor::crcTransform(crc::InSeg& s, const std::array<int64_t, kMaxAxes>& target) {
+std::array<int64_t, kMaxAxes> Executor::crcTransform(crc::InSeg& s,
+                                                     const std::array<int64_t, kMaxAxes>& target) {
   if (!xf_.active()) return target;
   if (xf_.rotation && xf_.rotPlane != modal_.plane)
-    throw AlarmError(AlarmId::IllegalPlaneForRotation,
-                     fmt::format("cutter compensation in G{} under G68 in G{}", modal_.plane, xf_.rotPlane));
+    throw AlarmError(
+        AlarmId::IllegalPlaneForRotation,
+        fmt::format("cutter compensation in G{} under G68 in G{}", modal_.plane, xf_.rotPlane));
   const PlaneIdx pi = planeIdx(modal_.plane);
   const double unit = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
   auto map = [&](const std::array<int64_t, kMaxAxes>& base, crc::P2& p) {
-    xform::P3 q{static_cast<double>(base[0]), static_cast<double>(base[1]), static_cast<double>(base[2])};
+    xform::P3 q{static_cast<double>(base[0]), static_cast<double>(base[1]),
+                static_cast<double>(base[2])};
     q[pi.u] = p.u * unit;
     q[pi.v] = p.v * unit;
     q = xf_.apply(q);
@@ -199,26 +220,31 @@ std::array<int64_t, kMaxAxes> Executor::crcTransform(crc::InSeg& s, const std::a
   if (s.hasIJK) mapDir(s.ijk);
   if (s.cornerHasDir) mapDir(s.cornerDir);
   if (xf_.flips(modal_.plane)) {
-    if (s.kind != crc::Kind::Line) s.kind = s.kind == crc::Kind::Cw ? crc::Kind::Ccw : crc::Kind::Cw;
-    if (s.side != crc::Side::Off) s.side = s.side == crc::Side::Left ? crc::Side::Right : crc::Side::Left;
+    if (s.kind != crc::Kind::Line)
+      s.kind = s.kind == crc::Kind::Cw ? crc::Kind::Ccw : crc::Kind::Cw;
+    if (s.side != crc::Side::Off)
+      s.side = s.side == crc::Side::Left ? crc::Side::Right : crc::Side::Left;
   }
   return transformed(target);
 }
 
 // A block in compensation mode. Returns true when it had motion.
-bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc,
-                        bool cw) {
+bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask,
+                        bool arc, bool cw) {
   ensureCompensator();
   const PlaneIdx pi = planeIdx(modal_.plane);
   double unit = modal_.unit == InputUnit::Inch ? 25.4e6 : 1e6;
   int tag = (crcTag_ += 2);  // odd tags: the ,C/,R corner after a block (crcPush)
   bool planeMove = (mask & ((1u << pi.u) | (1u << pi.v))) || (arc && w.any("IJKR"));
-  crc::Side side = modal_.g[7] == 410 ? crc::Side::Left : modal_.g[7] == 420 ? crc::Side::Right : crc::Side::Off;
+  crc::Side side = modal_.g[7] == 410   ? crc::Side::Left
+                   : modal_.g[7] == 420 ? crc::Side::Right
+                                        : crc::Side::Off;
   try {
     if (planeMove) {
       crc::InSeg s;
       s.kind = arc ? (cw ? crc::Kind::Cw : crc::Kind::Ccw) : crc::Kind::Line;
-      s.start = {static_cast<double>(programmed_[pi.u]) / unit, static_cast<double>(programmed_[pi.v]) / unit};
+      s.start = {static_cast<double>(programmed_[pi.u]) / unit,
+                 static_cast<double>(programmed_[pi.v]) / unit};
       s.end = {static_cast<double>(target[pi.u]) / unit, static_cast<double>(target[pi.v]) / unit};
       if (arc) {
         double cu = 0, cv = 0;
@@ -243,7 +269,8 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       s.cornerDir = g39Dir_;
       if (side == crc::Side::Off && w.any("IJK") && !arc) {
         s.hasIJK = true;
-        s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0, w.has("IJK"[pi.v]) ? w.value("IJK"[pi.v]) : 0.0};
+        s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0,
+                 w.has("IJK"[pi.v]) ? w.value("IJK"[pi.v]) : 0.0};
       }
       const std::array<int64_t, kMaxAxes> actual = crcTransform(s, target);
       CrcBlock info;
@@ -255,7 +282,9 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       info.target = actual;
       info.feed = modal_.feed;
       info.plane = modal_.plane;
-      for (int k = 0; k < kMaxAxes; ++k) info.programmedEnd[static_cast<size_t>(k)] = toProgramUnits(actual[static_cast<size_t>(k)], k, true);
+      for (int k = 0; k < kMaxAxes; ++k)
+        info.programmedEnd[static_cast<size_t>(k)] =
+            toProgramUnits(actual[static_cast<size_t>(k)], k, true);
       crcBlocks_[tag] = info;
       Pending p;
       p.tag = tag;
@@ -277,7 +306,8 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
         Pending p;
         p.action = [this, t, m, at] {
           std::array<int64_t, kMaxAxes> to{};
-          for (size_t a = 0; a < kMaxAxes; ++a) to[a] = (m & (1u << a)) ? t[a] : machine_[a] - offset_[a];
+          for (size_t a = 0; a < kMaxAxes; ++a)
+            to[a] = (m & (1u << a)) ? t[a] : machine_[a] - offset_[a];
           EventOrigin saved = origin_;
           origin_ = at;
           moveTo(to, modal_.motion == 0 ? MoveMode::Rapid : MoveMode::Linear, m);
@@ -287,7 +317,9 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
         for (size_t a = 0; a < kMaxAxes; ++a)
           if (mask & (1u << a)) programmed_[a] = target[a];
       }
-      if (crcCorner_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the block after ,C/,R does not move in the plane");
+      if (crcCorner_)
+        throw AlarmError(AlarmId::MissingMoveAfterChamfer,
+                         "the block after ,C/,R does not move in the plane");
       crc_->pushNonMoving(tag);
     }
   } catch (const crc::CrcError& e) {

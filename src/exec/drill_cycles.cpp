@@ -13,7 +13,9 @@ namespace ncvm {
 
 namespace {
 // The drilling axis is the normal of the plane: Z in G17, Y in G18, X in G19.
-int drillingAxis(int plane) { return plane == 18 ? 1 : plane == 19 ? 0 : 2; }
+int drillingAxis(int plane) {
+  return plane == 18 ? 1 : plane == 19 ? 0 : 2;
+}
 }  // namespace
 
 void Executor::cancelCycle() {
@@ -32,8 +34,9 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
   // Hole positions and levels are program coordinates; under G51.1/G51/G68 each hole and
   // level goes through the transforms (drillOneHole runs in the tool's coordinates).
   if (xf_.active() && xf_.rotation && xf_.rotPlane != modal_.plane)
-    throw AlarmError(AlarmId::IllegalPlaneForRotation,
-                     fmt::format("canned cycle in G{} under G68 in G{}", modal_.plane, xf_.rotPlane));
+    throw AlarmError(
+        AlarmId::IllegalPlaneForRotation,
+        fmt::format("canned cycle in G{} under G68 in G{}", modal_.plane, xf_.rotPlane));
   const std::array<int64_t, kMaxAxes> here = programmedHere();
 
   if (cycleCommanded && (!cycle_.active || cycle_.axis != axis)) {
@@ -66,9 +69,12 @@ bool Executor::drillCycle(const Words& w, bool cycleCommanded) {
     if (setup_.axes[static_cast<size_t>(k)].present && w.has("XYZABC"[k])) position = true;
   if (!position && !w.has(reLetter)) return false;
   if (repeats == 0) return false;  // K0 stores the data without drilling
-  if (!cycle_.haveZ) throw AlarmError(AlarmId::NoDataAfterAddress, fmt::format("{} of the hole bottom", axisLetter));
+  if (!cycle_.haveZ)
+    throw AlarmError(AlarmId::NoDataAfterAddress, fmt::format("{} of the hole bottom", axisLetter));
   if ((code == 730 || code == 830) && cycle_.q <= 0) throw AlarmError(AlarmId::QNotFound);
-  if (code == 870 && modal_.g[10] == 990) throw AlarmError(AlarmId::ImproperGCode, "G87 back boring returns to the initial level only (G98)");
+  if (code == 870 && modal_.g[10] == 990)
+    throw AlarmError(AlarmId::ImproperGCode,
+                     "G87 back boring returns to the initial level only (G98)");
 
   // Hole positions: the plane axes of the block; with G91 and K they repeat at that pitch.
   std::array<int64_t, kMaxAxes> planeTarget = here;
@@ -151,7 +157,8 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
   // 0 = +X, 1 = -X, 2 = +Y, 3 = -Y in G17).
   auto shifted = [&](int64_t level, int sign) {
     std::array<int64_t, kMaxAxes> p = at(level);
-    int rd = static_cast<int>(setup_.param("5101#4", 0)) + 2 * static_cast<int>(setup_.param("5101#5", 0));
+    int rd = static_cast<int>(setup_.param("5101#4", 0)) +
+             2 * static_cast<int>(setup_.param("5101#5", 0));
     size_t shiftAxis = rd >= 2 ? (A == 1 ? 2 : 1) : (A == 0 ? 1 : 0);
     int64_t s = (rd % 2 == 0 ? 1 : -1) * sign * cycle_.q;
     p[shiftAxis] += s;
@@ -286,8 +293,10 @@ void Executor::drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code,
   }
   // Return: G98 to the initial level, G99 to R (the tapping and boring cycles that feed out
   // are already at R).
-  if (toInitial) rapid(initial);
-  else if (machine_[A] - offset_[A] != rLevel) rapid(rLevel);
+  if (toInitial)
+    rapid(initial);
+  else if (machine_[A] - offset_[A] != rLevel)
+    rapid(rLevel);
 }
 
 }  // namespace ncvm

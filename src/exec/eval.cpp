@@ -47,7 +47,9 @@ double sinDeg(double d) {
   if (r == 270) return -1.0;
   return std::sin(d * kDeg);
 }
-double cosDeg(double d) { return sinDeg(d + 90.0); }
+double cosDeg(double d) {
+  return sinDeg(d + 90.0);
+}
 
 double bcdToBinary(double x) {
   int64_t v = toInteger(x);
@@ -65,7 +67,8 @@ double bcdToBinary(double x) {
 
 double binaryToBcd(double x) {
   int64_t v = toInteger(x);
-  if (v < 0 || v > 99999999) throw AlarmError(AlarmId::ArgumentOutOfRange, "BCD of a value out of 0-99999999");
+  if (v < 0 || v > 99999999)
+    throw AlarmError(AlarmId::ArgumentOutOfRange, "BCD of a value out of 0-99999999");
   int64_t out = 0;
   int shift = 0;
   while (v) {
@@ -81,8 +84,10 @@ double binaryToBcd(double x) {
 double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
   bool nat = nat_;
   switch (fn) {
-    case Fn::Sin: return sinDeg(a);
-    case Fn::Cos: return cosDeg(a);
+    case Fn::Sin:
+      return sinDeg(a);
+    case Fn::Cos:
+      return cosDeg(a);
     case Fn::Tan: {
       double c = cosDeg(a);
       if (c == 0.0) throw AlarmError(AlarmId::ZeroDivide, "TAN of 90 degrees");
@@ -108,27 +113,35 @@ double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
     case Fn::Sqrt:
       if (a < 0) throw AlarmError(AlarmId::ArgumentOutOfRange, "SQRT of a negative value");
       return std::sqrt(a);
-    case Fn::Abs: return std::fabs(a);
-    case Fn::Bin: return bcdToBinary(a);
-    case Fn::Bcd: return binaryToBcd(a);
+    case Fn::Abs:
+      return std::fabs(a);
+    case Fn::Bin:
+      return bcdToBinary(a);
+    case Fn::Bcd:
+      return binaryToBcd(a);
     case Fn::Round:  // halves away from zero; in an NC address to its least increment
       return roundPerUnit_ > 1 ? std::round(a * roundPerUnit_) / roundPerUnit_ : std::round(a);
-    case Fn::Fix: return std::trunc(a);
-    case Fn::Fup: return a >= 0 ? std::ceil(a) : std::floor(a);
+    case Fn::Fix:
+      return std::trunc(a);
+    case Fn::Fup:
+      return a >= 0 ? std::ceil(a) : std::floor(a);
     case Fn::Ln:
       if (a <= 0) throw AlarmError(AlarmId::ArgumentOutOfRange, "LN of zero or a negative value");
       return std::log(a);
-    case Fn::Exp: return checked(std::exp(a));
+    case Fn::Exp:
+      return checked(std::exp(a));
     case Fn::Pow: {
       if (a == 0 && b < 0) throw AlarmError(AlarmId::ZeroDivide, "POW of zero to a negative power");
       if (a < 0 && b != std::trunc(b))
-        throw AlarmError(AlarmId::ArgumentOutOfRange, "POW of a negative value to a fractional power");
+        throw AlarmError(AlarmId::ArgumentOutOfRange,
+                         "POW of a negative value to a fractional power");
       return checked(std::pow(a, b));
     }
     case Fn::Adp: {
       // ADP[#n]: undo the least-increment scaling of an argument written without a point.
       if (arg < 1 || arg > 33) return a;
-      double scale = noPointScale_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(arg - 1)];
+      double scale =
+          noPointScale_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(arg - 1)];
       return scale > 0 ? a * scale : a;
     }
   }
@@ -166,16 +179,19 @@ Value Executor::eval(int32_t expr) {
     try {
       switch (in.op) {
         case Op::Const:
-          if (sp >= kStack) throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
+          if (sp >= kStack)
+            throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
           st[sp++] = macroPrecision(Value::num(p.consts[static_cast<size_t>(in.arg)]));
           break;
         case Op::Var:
-          if (sp >= kStack) throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
+          if (sp >= kStack)
+            throw AlarmError(AlarmId::IllegalExpressionFormat, "expression too deep");
           st[sp++] = macroPrecision(readVar(in.arg));
           break;
         case Op::VarInd: {
           double n = st[sp - 1].asNumber();
-          if (!std::isfinite(n) || std::fabs(n) > 1e9) throw AlarmError(AlarmId::VariableOutOfRange);
+          if (!std::isfinite(n) || std::fabs(n) > 1e9)
+            throw AlarmError(AlarmId::VariableOutOfRange);
           st[sp - 1] = macroPrecision(readVar(std::llround(n)));
           break;
         }
@@ -205,9 +221,15 @@ Value Executor::eval(int32_t expr) {
           double a = st[sp - 1].asNumber(), b = st[sp].asNumber();
           double v = 0;
           switch (in.op) {
-            case Op::Add: v = a + b; break;
-            case Op::Sub: v = a - b; break;
-            case Op::Mul: v = a * b; break;
+            case Op::Add:
+              v = a + b;
+              break;
+            case Op::Sub:
+              v = a - b;
+              break;
+            case Op::Mul:
+              v = a * b;
+              break;
             case Op::Div:
               if (b == 0) throw AlarmError(AlarmId::ZeroDivide);
               v = a / b;
@@ -216,17 +238,38 @@ Value Executor::eval(int32_t expr) {
               if (b == 0) throw AlarmError(AlarmId::ZeroDivide, "MOD by zero");
               v = std::fmod(a, b);
               break;
-            case Op::And: v = static_cast<double>(toInteger(a) & toInteger(b)); break;
-            case Op::Or: v = static_cast<double>(toInteger(a) | toInteger(b)); break;
-            case Op::Xor: v = static_cast<double>(toInteger(a) ^ toInteger(b)); break;
-            case Op::LAnd: v = (a != 0 && b != 0) ? 1 : 0; break;
-            case Op::LOr: v = (a != 0 || b != 0) ? 1 : 0; break;
-            case Op::LXor: v = ((a != 0) != (b != 0)) ? 1 : 0; break;
-            case Op::Gt: v = a > b; break;
-            case Op::Ge: v = a >= b; break;
-            case Op::Lt: v = a < b; break;
-            case Op::Le: v = a <= b; break;
-            default: break;
+            case Op::And:
+              v = static_cast<double>(toInteger(a) & toInteger(b));
+              break;
+            case Op::Or:
+              v = static_cast<double>(toInteger(a) | toInteger(b));
+              break;
+            case Op::Xor:
+              v = static_cast<double>(toInteger(a) ^ toInteger(b));
+              break;
+            case Op::LAnd:
+              v = (a != 0 && b != 0) ? 1 : 0;
+              break;
+            case Op::LOr:
+              v = (a != 0 || b != 0) ? 1 : 0;
+              break;
+            case Op::LXor:
+              v = ((a != 0) != (b != 0)) ? 1 : 0;
+              break;
+            case Op::Gt:
+              v = a > b;
+              break;
+            case Op::Ge:
+              v = a >= b;
+              break;
+            case Op::Lt:
+              v = a < b;
+              break;
+            case Op::Le:
+              v = a <= b;
+              break;
+            default:
+              break;
           }
           st[sp - 1] = macroPrecision(Value::num(checked(v)));
         }
@@ -255,6 +298,8 @@ Value Executor::evalAddress(int32_t expr, char letter) {
   return eval(expr);
 }
 
-bool Executor::evalCond(int32_t expr) { return eval(expr).asNumber() != 0.0; }
+bool Executor::evalCond(int32_t expr) {
+  return eval(expr).asNumber() != 0.0;
+}
 
 }  // namespace ncvm

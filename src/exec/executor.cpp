@@ -1,33 +1,46 @@
 #include "exec/executor.hpp"
 
-#include "lang/program_stream.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "lang/program_stream.hpp"
+
 namespace ncvm {
 
 const char* endReasonName(EndReason r) {
   switch (r) {
-    case EndReason::M30: return "M30";
-    case EndReason::M02: return "M02";
-    case EndReason::M99: return "M99";
-    case EndReason::Alarm: return "alarm";
-    case EndReason::Eof: return "eof";
-    case EndReason::Limit: return "limit";
+    case EndReason::M30:
+      return "M30";
+    case EndReason::M02:
+      return "M02";
+    case EndReason::M99:
+      return "M99";
+    case EndReason::Alarm:
+      return "alarm";
+    case EndReason::Eof:
+      return "eof";
+    case EndReason::Limit:
+      return "limit";
   }
   return "eof";
 }
 
-EventSink& Executor::sink() { return deferring_ ? static_cast<EventSink&>(deferSink_) : realSink_; }
+EventSink& Executor::sink() {
+  return deferring_ ? static_cast<EventSink&>(deferSink_) : realSink_;
+}
 
 Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
-    : setup_(setup), store_(store), realSink_(sink), series_(setup.series()),
-      lathe_(setup.kind == MachineKind::Lathe), dpi_(setup.dpi()) {
+    : setup_(setup),
+      store_(store),
+      realSink_(sink),
+      series_(setup.series()),
+      lathe_(setup.kind == MachineKind::Lathe),
+      dpi_(setup.dpi()) {
   for (const auto& g : gcodeTable())
-    if ((g.seriesMask & seriesBit(series_)) && g.code10 >= 0 && g.code10 < 1000) gInfo_[static_cast<size_t>(g.code10)] = &g;
+    if ((g.seriesMask & seriesBit(series_)) && g.code10 >= 0 && g.code10 < 1000)
+      gInfo_[static_cast<size_t>(g.code10)] = &g;
   for (int k = 0; k < kMaxAxes; ++k) {
     bool rot = setup.axes[static_cast<size_t>(k)].rotary;
     nmPerIncMm_[static_cast<size_t>(k)] = nmPerIncrement(setup.increment, InputUnit::Mm, rot);
@@ -49,7 +62,8 @@ Executor::Executor(const Setup& setup, ProgramStore& store, EventSink& sink)
   // Power-on modal state.
   modal_.unit = setup.initialUnit;
   auto set = [&](int code10) {
-    if (const GCodeInfo* g = gInfo_[static_cast<size_t>(code10)]) modal_.g[g->group] = static_cast<int16_t>(code10);
+    if (const GCodeInfo* g = gInfo_[static_cast<size_t>(code10)])
+      modal_.g[g->group] = static_cast<int16_t>(code10);
   };
   for (int c : {0, 400, 490, 500, 501, 540, 640, 670, 690, 800, 970, 150, 230, 131}) set(c);
   set(lathe_ ? 180 : 170);
@@ -77,7 +91,9 @@ void Executor::restartFromMemory() {
   probeWorld_ = SolidWorld::fromSetup(setup_, [&](int index) {
     Vec3 v{};
     for (size_t k = 0; k < 3; ++k)
-      v[k] = static_cast<double>(mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(index)][k]) / 1e6;
+      v[k] =
+          static_cast<double>(mem_.work[kWorkExt][k] + mem_.work[static_cast<size_t>(index)][k]) /
+          1e6;
     return v;
   });
   recomputeOffset();
@@ -168,8 +184,8 @@ void Executor::enter(const Program* p, FrameKind kind, int repeats, bool codeCal
 void Executor::callSub(const Program* p, int repeats, bool codeCalled, int32_t startLabel) {
   if (subDepth_ + 1 > setup_.limits.subprogramNesting ||
       subDepth_ + macroDepth_ + 1 > setup_.limits.totalNesting)
-    throw AlarmError(AlarmId::TooManySubNesting,
-                     fmt::format("more than {} subprogram levels", setup_.limits.subprogramNesting));
+    throw AlarmError(AlarmId::TooManySubNesting, fmt::format("more than {} subprogram levels",
+                                                             setup_.limits.subprogramNesting));
   int32_t start = 0;
   if (startLabel >= 0) {
     // M98 Q: the sequence number is searched in the called program from its start (the
@@ -191,15 +207,18 @@ void Executor::callMacro(const Program* p, int repeats, const std::array<Value, 
     throw AlarmError(AlarmId::TooManyMacroNesting,
                      fmt::format("more than {} macro levels", setup_.limits.macroNesting));
   if (subDepth_ + macroDepth_ + 1 > setup_.limits.totalNesting)
-    throw AlarmError(AlarmId::TooManySubNesting, "more than " + std::to_string(setup_.limits.totalNesting) + " call levels");
+    throw AlarmError(AlarmId::TooManySubNesting,
+                     "more than " + std::to_string(setup_.limits.totalNesting) + " call levels");
   int16_t floor = frames_.back().modalFloor;
   enter(p, kind, repeats, codeCalled);
   ++macroDepth_;
   int8_t level = static_cast<int8_t>(macroDepth_);
   Frame& f = frames_.back();
   f.level = level;
-  if (kind == FrameKind::ModalMacro) f.modalFloor = static_cast<int16_t>(modalCalls_.size());
-  else f.modalFloor = floor;
+  if (kind == FrameKind::ModalMacro)
+    f.modalFloor = static_cast<int16_t>(modalCalls_.size());
+  else
+    f.modalFloor = floor;
   auto L = static_cast<size_t>(level);
   locals_[L] = args;
   noPointScale_[L] = scale;
@@ -232,8 +251,10 @@ void Executor::doReturn(int32_t label) {
     }
     return;
   }
-  if (f.kind == FrameKind::Sub) --subDepth_;
-  else --macroDepth_;
+  if (f.kind == FrameKind::Sub)
+    --subDepth_;
+  else
+    --macroDepth_;
   frames_.pop_back();
   if (label >= 0) {
     Frame& caller = frames_.back();
@@ -260,13 +281,15 @@ void Executor::jumpTo(int32_t label, bool computed) {
     if (label < 1 || label > 99999999)
       throw AlarmError(AlarmId::IllegalMacroSequence, std::to_string(label));
     t = f.prog->findLabel(label, f.pc);
-    if (t < 0) throw AlarmError(AlarmId::IllegalMacroSequence, "N" + std::to_string(label) + " not found");
+    if (t < 0)
+      throw AlarmError(AlarmId::IllegalMacroSequence, "N" + std::to_string(label) + " not found");
     // A jump into a loop the GOTO is not inside is illegal.
     // (block_ is blocks[f.pc]: the GOTO's own block.)
     for (int32_t l = f.prog->loopParent(static_cast<size_t>(t)); l >= 0;
          l = f.prog->loopParent(static_cast<size_t>(l))) {
       bool inside = false;
-      for (int32_t s = f.prog->loopParent(f.pc); s >= 0; s = f.prog->loopParent(static_cast<size_t>(s)))
+      for (int32_t s = f.prog->loopParent(f.pc); s >= 0;
+           s = f.prog->loopParent(static_cast<size_t>(s)))
         inside |= s == l;
       if (!inside) throw AlarmError(AlarmId::IllegalLoopNumber, "GOTO jumps into a loop");
     }
@@ -288,7 +311,8 @@ EndReason Executor::run(const Program& main) {
     enter(&main, FrameKind::Main, 1, false);
     while (step()) {
     }
-    if (cornerHold_ || crcCorner_) throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the program ends after a ,C/,R block");
+    if (cornerHold_ || crcCorner_)
+      throw AlarmError(AlarmId::MissingMoveAfterChamfer, "the program ends after a ,C/,R block");
     crcDrain();  // the end of the program releases whatever compensation still holds
   } catch (const AlarmError& e) {
     Alarm a;
@@ -318,9 +342,10 @@ EndReason Executor::run(const Program& main) {
     pending_.clear();
     deferring_ = false;
     realSink_.onAlarm(AlarmEvent{at, a.code, a.text});
-    endReason_ = (a.code == alarmCode(AlarmId::BlockLimit) || a.code == alarmCode(AlarmId::TimeLimit))
-                     ? EndReason::Limit
-                     : EndReason::Alarm;
+    endReason_ =
+        (a.code == alarmCode(AlarmId::BlockLimit) || a.code == alarmCode(AlarmId::TimeLimit))
+            ? EndReason::Limit
+            : EndReason::Alarm;
   }
   return endReason_;
 }
@@ -450,11 +475,13 @@ bool Executor::step() {
 }
 
 void Executor::blockLimitAlarm() const {
-  throw AlarmError(AlarmId::BlockLimit, fmt::format("limits.max_blocks = {}", setup_.limits.maxBlocks));
+  throw AlarmError(AlarmId::BlockLimit,
+                   fmt::format("limits.max_blocks = {}", setup_.limits.maxBlocks));
 }
 
 void Executor::timeLimitAlarm() const {
-  throw AlarmError(AlarmId::TimeLimit, fmt::format("limits.max_time_s = {}", setup_.limits.maxTimeSeconds));
+  throw AlarmError(AlarmId::TimeLimit,
+                   fmt::format("limits.max_time_s = {}", setup_.limits.maxTimeSeconds));
 }
 
 void Executor::advanceTime(double seconds) {
@@ -465,14 +492,17 @@ void Executor::advanceTime(double seconds) {
 std::vector<std::pair<int, double>> Executor::userVariables() const {
   std::vector<std::pair<int, double>> out;
   for (int k = 0; k < 33; ++k)
-    if (!locals_[0][static_cast<size_t>(k)].null) out.emplace_back(k + 1, locals_[0][static_cast<size_t>(k)].v);
+    if (!locals_[0][static_cast<size_t>(k)].null)
+      out.emplace_back(k + 1, locals_[0][static_cast<size_t>(k)].v);
   for (int k = 0; k < 100; ++k)
-    if (!common100_[static_cast<size_t>(k)].null) out.emplace_back(100 + k, common100_[static_cast<size_t>(k)].v);
+    if (!common100_[static_cast<size_t>(k)].null)
+      out.emplace_back(100 + k, common100_[static_cast<size_t>(k)].v);
   for (int k = 0; k < 300; ++k)
     if (!common200_[static_cast<size_t>(k)].null)
       out.emplace_back(200 + k, common200_[static_cast<size_t>(k)].v);
   for (int k = 0; k < 500; ++k)
-    if (!mem_.common500[static_cast<size_t>(k)].null) out.emplace_back(500 + k, mem_.common500[static_cast<size_t>(k)].v);
+    if (!mem_.common500[static_cast<size_t>(k)].null)
+      out.emplace_back(500 + k, mem_.common500[static_cast<size_t>(k)].v);
   return out;
 }
 

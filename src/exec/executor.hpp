@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <deque>
 #include <functional>
-#include <unordered_map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "canon/events.hpp"
@@ -58,7 +58,7 @@ struct ModalState {
   int32_t dOffset = 0, hOffset = 0;  // D, H
   double e = 0, b = 0;
   int32_t lastM = 0;
-  int32_t workP = 0;                 // P of G54.1
+  int32_t workP = 0;  // P of G54.1
   InputUnit unit = InputUnit::Mm;
   // Derived from g[] for the hot path.
   int motion = 10;  // 0, 10, 20, 30 (x10)
@@ -141,10 +141,10 @@ class Executor {
     uint32_t pc = 0;
     FrameKind kind = FrameKind::Main;
     int32_t repeatsLeft = 0;
-    int8_t level = 0;        // local variable level
-    bool codeCalled = false; // entered through a G/M/T code call
-    int16_t modalFloor = 0;  // G66 entries at or above this index may trigger here
-    uint32_t startPc = 0;    // where a repeat (L) starts again: M98 Q's block, else 0
+    int8_t level = 0;         // local variable level
+    bool codeCalled = false;  // entered through a G/M/T code call
+    int16_t modalFloor = 0;   // G66 entries at or above this index may trigger here
+    uint32_t startPc = 0;     // where a repeat (L) starts again: M98 Q's block, else 0
   };
   std::vector<Frame> frames_;
   int macroDepth_ = 0, subDepth_ = 0;
@@ -185,11 +185,11 @@ class Executor {
   std::array<int64_t, kMaxAxes> machine_{};  // nm / micro-degree, physical (lathe X radius)
   std::array<int64_t, kMaxAxes> offset_{};   // machine = work + offset_ (sum of the below)
   MachineMemory mem_;
-  int workIndex_ = kWorkG54;                    // selected work offset table
-  std::array<int64_t, kMaxAxes> g52_{}, g92_{}; // local system and G92/G50 shift
-  std::array<int64_t, kMaxAxes> toolShift_{};   // tool length (mill) or tool offset (lathe)
-  std::array<int64_t, 3> originSent_{};         // the work origin last sent (WorkOriginEvent)
-  bool originKnown_ = false;                    // one has been sent
+  int workIndex_ = kWorkG54;                     // selected work offset table
+  std::array<int64_t, kMaxAxes> g52_{}, g92_{};  // local system and G92/G50 shift
+  std::array<int64_t, kMaxAxes> toolShift_{};    // tool length (mill) or tool offset (lathe)
+  std::array<int64_t, 3> originSent_{};          // the work origin last sent (WorkOriginEvent)
+  bool originKnown_ = false;                     // one has been sent
   std::unique_ptr<SolidWorld> probeWorld_;
   const ProbeWorld* stockProbe_ = nullptr;
   std::string eventName_;                       // storage behind OffsetEvent::name
@@ -270,10 +270,11 @@ class Executor {
   void execNcGeneral(const Block& b);
   bool plainMotion(Words& w);  // execNcGeneral's fast path for plain G00-G03 blocks
   void gatherWords(const Block& b, Words& w);
-  void gatherPlainWords(const Block& b, Words& w) const;  // a kPlainBlock block's words
+  void gatherPlainWords(const Block& b, Words& w) const;   // a kPlainBlock block's words
   void checkDigits(const Word& wd, bool macroCall) const;  // PS0003 for a kLongNumber word
   bool codeCall(const Block& b, Words& w);
-  void buildArgs(const Words& w, int callingM, std::array<Value, 33>& args, std::array<double, 33>& scale) const;
+  void buildArgs(const Words& w, int callingM, std::array<Value, 33>& args,
+                 std::array<double, 33>& scale) const;
   void macroCallFromWords(const Program* p, int repeats, const Words& w, FrameKind kind,
                           bool codeCalled, int callingM = -1);
   void applyModalG(int code10, const GCodeInfo& info);
@@ -287,8 +288,8 @@ class Executor {
   // Increments to nanometres; PS0003 past kMaxTravelNm (motion.cpp says why).
   static int64_t checkedNm(int64_t increments, int64_t nmPerIncrement) {
     int64_t nm = 0;
-    if (__builtin_mul_overflow(increments, nmPerIncrement, &nm) || nm > kMaxTravelNm || nm < -kMaxTravelNm)
-        [[unlikely]]
+    if (__builtin_mul_overflow(increments, nmPerIncrement, &nm) || nm > kMaxTravelNm ||
+        nm < -kMaxTravelNm) [[unlikely]]
       travelAlarm();
     return nm;
   }
@@ -306,7 +307,8 @@ class Executor {
   // G02/G03 in effect and the block is an arc: with neither R nor I/J/K it is a line
   // unless parameter 3403#5 (CIR) asks for PS0022.
   bool arcBlock(const Words& w) const;
-  void arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu, double cv, bool cw);
+  void arcWithCenter(const std::array<int64_t, kMaxAxes>& targetWork, double cu, double cv,
+                     bool cw);
   void rapidMachine(const std::array<int64_t, kMaxAxes>& targetMachine, uint32_t axesMask);
   void emitMove(MoveEvent& e, const std::array<int64_t, kMaxAxes>& fromMachine,
                 const std::array<int64_t, kMaxAxes>& toMachine);
@@ -434,27 +436,37 @@ class Executor {
   void cancelCycle();
   bool drillCycle(const Words& w, bool cycleCommanded);
   // hole: where the tool drills (after any transform); the levels likewise.
-  void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis,
-                    int64_t initial, int64_t rLevel, int64_t bottom);
+  void drillOneHole(const std::array<int64_t, kMaxAxes>& hole, int code, int axis, int64_t initial,
+                    int64_t rLevel, int64_t bottom);
   bool rigidTap_ = false;  // M29 given: the next G84/G74 (lathe G84/G88) is rigid tapping
   // lathe_drill_cycles.cpp
   bool latheDrillCycle(const Words& w, bool cycleCommanded);
 
   // lathe_cycle_exec.cpp
   enum LatheCycleKind {
-    kNoCycle = 0, kTurn, kThread, kFace, kFinish, kRoughTurn, kRoughFace, kPattern, kFacePeck, kGroove, kMultiThread
+    kNoCycle = 0,
+    kTurn,
+    kThread,
+    kFace,
+    kFinish,
+    kRoughTurn,
+    kRoughFace,
+    kPattern,
+    kFacePeck,
+    kGroove,
+    kMultiThread
   };
   struct LatheCycleState {
     double depth = 1.0, retract = 0.5;  // G71/G72 first block (parameters 5132/5133)
     double reliefX = 0, reliefZ = 0;    // G73 first block
     int divisions = 1;
-    double taper = 0;                   // G90/G92/G94 R, modal
-    int singleKind = 0;                 // the single cycle the modal X/Z/R belong to
+    double taper = 0;    // G90/G92/G94 R, modal
+    int singleKind = 0;  // the single cycle the modal X/Z/R belong to
     bool haveEnd = false;
-    lathe::Pt lastEnd;                  // G90/G92/G94 X/Z, modal
-    double peckRetract = 0;             // G74/G75 first block (parameter 5139)
-    lathe::ThreadParams thread;         // G76 first block
-    bool paramsLoaded = false;          // the above start from parameters 5130-5143
+    lathe::Pt lastEnd;           // G90/G92/G94 X/Z, modal
+    double peckRetract = 0;      // G74/G75 first block (parameter 5139)
+    lathe::ThreadParams thread;  // G76 first block
+    bool paramsLoaded = false;   // the above start from parameters 5130-5143
   };
   LatheCycleState latheCyc_;
   int latheCycleKind(int code10) const;
@@ -463,7 +475,8 @@ class Executor {
   double latheLength(const Words& w, char letter, bool diameter) const;
   double latheIncrements(const Words& w, char letter) const;
   lathe::Contour readContour(int ns, int nf, std::vector<double>& feeds, uint32_t& lastBlock);
-  void runLathePlan(const std::vector<lathe::Move>& moves, const std::vector<double>* contourFeeds, double lead);
+  void runLathePlan(const std::vector<lathe::Move>& moves, const std::vector<double>* contourFeeds,
+                    double lead);
   bool latheCycle(const Words& w, int kind);
   void loadLatheCycleParams();
 
@@ -486,10 +499,10 @@ class Executor {
     void onSignal(const SignalEvent& e) override;
   };
   struct Pending {
-    int tag = -1;                   // >= 0: a compensated move waiting for its path
-    bool closed = false;            // its path is complete
+    int tag = -1;         // >= 0: a compensated move waiting for its path
+    bool closed = false;  // its path is complete
     std::vector<crc::OutSeg> segs;
-    std::function<void()> action;   // tag < 0: anything else the block did
+    std::function<void()> action;  // tag < 0: anything else the block did
   };
   struct CrcBlock {
     crc::P2 tip;  // lathe: imaginary tip minus nose centre (plane units) while compensated
@@ -517,13 +530,15 @@ class Executor {
   void crcOutput(const crc::OutSeg& s);
   void releasePending(bool all);
   void crcDrain();
-  std::array<int64_t, kMaxAxes> crcTransform(crc::InSeg& s, const std::array<int64_t, kMaxAxes>& target);
-  bool crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
+  std::array<int64_t, kMaxAxes> crcTransform(crc::InSeg& s,
+                                             const std::array<int64_t, kMaxAxes>& target);
+  bool crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask,
+                bool arc, bool cw);
   void arcCenter(const std::array<int64_t, kMaxAxes>& startW,
                  const std::array<int64_t, kMaxAxes>& targetWork, const Words& w, bool cw,
                  double& cu, double& cv);
 
-  bool g39Pending_ = false;   // G39 read: the next compensated block starts with a corner arc
+  bool g39Pending_ = false;  // G39 read: the next compensated block starts with a corner arc
   EventOrigin g39Origin_;
   bool g39HasDir_ = false;  // G39 I/J/K: the direction the corner arc ends perpendicular to
   crc::P2 g39Dir_;
@@ -534,8 +549,8 @@ class Executor {
   bool transformBlock(const Words& w, int oneShot);  // true: the block's axis words were its data
   void transformRestrictions(int oneShot, bool workChanged) const;
   std::array<int64_t, kMaxAxes> transformed(const std::array<int64_t, kMaxAxes>& p) const;
-  std::array<int64_t, kMaxAxes> programmedHere() const;  // where the program thinks the tool is
-  void untransformProgrammed();                            // programmed_ from the tool position
+  std::array<int64_t, kMaxAxes> programmedHere() const;   // where the program thinks the tool is
+  void untransformProgrammed();                           // programmed_ from the tool position
   const std::array<int64_t, kMaxAxes>* moveBase() const;  // base of incremental words
   // One programmed move (work coordinates before the transforms; arcs with their centre).
   struct PlannedMove {
@@ -568,7 +583,8 @@ class Executor {
   };
   std::optional<CrcCorner> crcCorner_;
   bool crcPush(crc::InSeg s, const Words& w);  // false: held for its ,C/,R
-  bool plannedBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask, bool arc, bool cw);
+  bool plannedBlock(const Words& w, const std::array<int64_t, kMaxAxes>& target, uint32_t mask,
+                    bool arc, bool cw);
   void cornerCheckBlock(const Words& w, int oneShot, bool crcMode) const;
   struct ContourCorner {
     size_t seg;  // the shape segment the ,C/,R block made
@@ -576,7 +592,8 @@ class Executor {
     double amount;  // program units
     const Block* block;
   };
-  void applyContourCorners(lathe::Contour& c, std::vector<double>& feeds, const std::vector<ContourCorner>& corners);
+  void applyContourCorners(lathe::Contour& c, std::vector<double>& feeds,
+                           const std::vector<ContourCorner>& corners);
 
   // print.cpp
   void print(const Block& b);

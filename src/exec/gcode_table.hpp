@@ -23,7 +23,9 @@ struct GCodeInfo {
   const char* meaning;
 };
 
-constexpr uint8_t seriesBit(Series s) { return static_cast<uint8_t>(1u << static_cast<unsigned>(s)); }
+constexpr uint8_t seriesBit(Series s) {
+  return static_cast<uint8_t>(1u << static_cast<unsigned>(s));
+}
 
 const std::vector<GCodeInfo>& gcodeTable();
 // nullptr when the series has no such code.

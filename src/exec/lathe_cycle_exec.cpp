@@ -16,34 +16,54 @@ int Executor::latheCycleKind(int code10) const {
   if (!lathe_) return 0;
   bool c = series_ == Series::TC;
   switch (code10) {
-    case 700: return c ? 0 : kFinish;
-    case 710: return c ? 0 : kRoughTurn;
-    case 720: return c ? kFinish : kRoughFace;
-    case 730: return c ? kRoughTurn : kPattern;
-    case 740: return c ? kRoughFace : kFacePeck;
-    case 750: return c ? kPattern : kGroove;
-    case 760: return c ? kFacePeck : kMultiThread;
-    case 770: return c ? kGroove : (series_ == Series::TB ? kTurn : 0);
-    case 780: return c ? kMultiThread : (series_ == Series::TB ? kThread : 0);
-    case 790: return series_ == Series::TB ? kFace : 0;
-    case 900: return series_ == Series::TA ? kTurn : 0;
-    case 920: return series_ == Series::TA ? kThread : 0;
-    case 940: return series_ == Series::TA ? kFace : 0;
-    case 200: return c ? kTurn : 0;
-    case 210: return c ? kThread : 0;
-    case 240: return c ? kFace : 0;
-    default: return 0;
+    case 700:
+      return c ? 0 : kFinish;
+    case 710:
+      return c ? 0 : kRoughTurn;
+    case 720:
+      return c ? kFinish : kRoughFace;
+    case 730:
+      return c ? kRoughTurn : kPattern;
+    case 740:
+      return c ? kRoughFace : kFacePeck;
+    case 750:
+      return c ? kPattern : kGroove;
+    case 760:
+      return c ? kFacePeck : kMultiThread;
+    case 770:
+      return c ? kGroove : (series_ == Series::TB ? kTurn : 0);
+    case 780:
+      return c ? kMultiThread : (series_ == Series::TB ? kThread : 0);
+    case 790:
+      return series_ == Series::TB ? kFace : 0;
+    case 900:
+      return series_ == Series::TA ? kTurn : 0;
+    case 920:
+      return series_ == Series::TA ? kThread : 0;
+    case 940:
+      return series_ == Series::TA ? kFace : 0;
+    case 200:
+      return c ? kTurn : 0;
+    case 210:
+      return c ? kThread : 0;
+    case 240:
+      return c ? kFace : 0;
+    default:
+      return 0;
   }
 }
 
 namespace {
-double unitNm(InputUnit u) { return u == InputUnit::Inch ? 25.4e6 : 1e6; }
+double unitNm(InputUnit u) {
+  return u == InputUnit::Inch ? 25.4e6 : 1e6;
+}
 }  // namespace
 
 // Positions in the planners' terms: (x radius, z) in program units.
 lathe::Pt Executor::latheHere() const {
   double u = unitNm(modal_.unit);
-  return {static_cast<double>(machine_[0] - offset_[0]) / u, static_cast<double>(machine_[2] - offset_[2]) / u};
+  return {static_cast<double>(machine_[0] - offset_[0]) / u,
+          static_cast<double>(machine_[2] - offset_[2]) / u};
 }
 
 // The end point of a cycle block: X (diameter) or U, Z or W; G91 in systems B/C.
@@ -54,27 +74,32 @@ lathe::Pt Executor::latheTarget(const Words& w, const lathe::Pt& from) const {
     double x = static_cast<double>(lengthNm(w.value('X'), w.hasPoint('X'), 0)) / 2.0 / u;
     p.x = modal_.incremental ? from.x + x : x;
   }
-  if (w.has('U')) p.x = from.x + static_cast<double>(lengthNm(w.value('U'), w.hasPoint('U'), 0)) / 2.0 / u;
+  if (w.has('U'))
+    p.x = from.x + static_cast<double>(lengthNm(w.value('U'), w.hasPoint('U'), 0)) / 2.0 / u;
   if (w.has('Z')) {
     double z = static_cast<double>(lengthNm(w.value('Z'), w.hasPoint('Z'), 2)) / u;
     p.z = modal_.incremental ? from.z + z : z;
   }
-  if (w.has('W')) p.z = from.z + static_cast<double>(lengthNm(w.value('W'), w.hasPoint('W'), 2)) / u;
+  if (w.has('W'))
+    p.z = from.z + static_cast<double>(lengthNm(w.value('W'), w.hasPoint('W'), 2)) / u;
   return p;
 }
 
 double Executor::latheLength(const Words& w, char letter, bool diameter) const {
-  double v = static_cast<double>(lengthNm(w.value(letter), w.hasPoint(letter), 2)) / unitNm(modal_.unit);
+  double v =
+      static_cast<double>(lengthNm(w.value(letter), w.hasPoint(letter), 2)) / unitNm(modal_.unit);
   return diameter ? v / 2.0 : v;
 }
 
 // P and Q of G74-G76 are integer counts of least increments (no decimal point).
 double Executor::latheIncrements(const Words& w, char letter) const {
-  return std::fabs(static_cast<double>(std::llround(w.value(letter)))) * leastIncrement(setup_.increment, modal_.unit);
+  return std::fabs(static_cast<double>(std::llround(w.value(letter)))) *
+         leastIncrement(setup_.increment, modal_.unit);
 }
 
 // The finishing contour: blocks ns..nf of the current program, evaluated now.
-lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds, uint32_t& lastBlock) {
+lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
+                                     uint32_t& lastBlock) {
   const Frame& f = frames_.back();
   const Program& prog = *f.prog;
   wholeProgram(prog);
@@ -102,17 +127,21 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
     gatherWords(b, w);
     for (int g = 0; g < w.ng; ++g) {
       int code = w.g[static_cast<size_t>(g)];
-      if (code == 0 || code == 10 || code == 20 || code == 30) motion = code;
-      else if (code == 400 || code == 410 || code == 420) comp = code;
+      if (code == 0 || code == 10 || code == 20 || code == 30)
+        motion = code;
+      else if (code == 400 || code == 410 || code == 420)
+        comp = code;
       else if (code != 400 && code != 410 && code != 420 && code != 40)
-        throw AlarmError(AlarmId::CycleUnavailableCommand, fmt::format("G{} between P and Q", code / 10));
+        throw AlarmError(AlarmId::CycleUnavailableCommand,
+                         fmt::format("G{} between P and Q", code / 10));
     }
     // A subprogram call or return cannot be part of the shape: the control reads ns..nf as
     // one stretch of the current program (0i-F/30i: PS0066).
     for (int m = 0; m < w.nm; ++m) {
       int32_t code = w.m[static_cast<size_t>(m)];
       if (code == 98 || code == 99)
-        throw AlarmError(AlarmId::CycleUnavailableCommand, fmt::format("M{} between P and Q", code));
+        throw AlarmError(AlarmId::CycleUnavailableCommand,
+                         fmt::format("M{} between P and Q", code));
     }
     if (k == first) {
       if (motion != 0 && motion != 10) throw AlarmError(AlarmId::ShapeFirstBlockNotG00G01);
@@ -135,7 +164,8 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
         double du = s.end.z - at.z, dv = s.end.x - at.x, d = std::hypot(du, dv);
         double h = std::sqrt(std::max(0.0, r * r - d * d / 4.0));
         double side = (motion == 20 ? -1.0 : 1.0) * (r < 0 ? -1.0 : 1.0);
-        s.center = {(at.x + s.end.x) / 2.0 + side * h * du / d, (at.z + s.end.z) / 2.0 - side * h * dv / d};
+        s.center = {(at.x + s.end.x) / 2.0 + side * h * du / d,
+                    (at.z + s.end.z) / 2.0 - side * h * dv / d};
       } else {
         s.center = {at.x + (w.has('I') ? latheLength(w, 'I', false) : 0.0),
                     at.z + (w.has('K') ? latheLength(w, 'K', false) : 0.0)};
@@ -144,7 +174,10 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
       s.kind = motion == 0 ? lathe::SegKind::Rapid : lathe::SegKind::Line;
     }
     (void)u;
-    if (w.hasCorner()) corners.push_back({c.segs.size(), w.hasCommaC, static_cast<double>(lengthNm(w.commaValue, w.commaPoint, 2)) / unitNm(modal_.unit), &b});
+    if (w.hasCorner())
+      corners.push_back(
+          {c.segs.size(), w.hasCommaC,
+           static_cast<double>(lengthNm(w.commaValue, w.commaPoint, 2)) / unitNm(modal_.unit), &b});
     c.segs.push_back(s);
     feeds.push_back(feed);
     at = s.end;
@@ -155,8 +188,8 @@ lathe::Contour Executor::readContour(int ns, int nf, std::vector<double>& feeds,
   return c;
 }
 
-void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::vector<double>* contourFeeds,
-                            double lead) {
+void Executor::runLathePlan(const std::vector<lathe::Move>& moves,
+                            const std::vector<double>* contourFeeds, double lead) {
   double u = unitNm(modal_.unit);
   double feedBefore = modal_.feed;
   bool perRevBefore = modal_.feedPerRev;
@@ -167,7 +200,8 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
     for (size_t k = 0; k < kMaxAxes; ++k) target[k] = machine_[k] - offset_[k];
     target[0] = static_cast<int64_t>(std::llround(m.end.x * u));
     target[2] = static_cast<int64_t>(std::llround(m.end.z * u));
-    if (contourFeeds && m.contourIndex >= 0 && static_cast<size_t>(m.contourIndex) < contourFeeds->size())
+    if (contourFeeds && m.contourIndex >= 0 &&
+        static_cast<size_t>(m.contourIndex) < contourFeeds->size())
       modal_.feed = (*contourFeeds)[static_cast<size_t>(m.contourIndex)];
     else
       modal_.feed = feedBefore;
@@ -191,8 +225,12 @@ void Executor::runLathePlan(const std::vector<lathe::Move>& moves, const std::ve
       noseEnd_ = &nose;
     }
     switch (m.kind) {
-      case lathe::SegKind::Rapid: moveTo(target, MoveMode::Rapid, 0); break;
-      case lathe::SegKind::Line: moveTo(target, MoveMode::Linear, 0); break;
+      case lathe::SegKind::Rapid:
+        moveTo(target, MoveMode::Rapid, 0);
+        break;
+      case lathe::SegKind::Line:
+        moveTo(target, MoveMode::Linear, 0);
+        break;
       case lathe::SegKind::ArcCw:
       case lathe::SegKind::ArcCcw:
         arcWithCenter(target, m.center.z * u, m.center.x * u, m.kind == lathe::SegKind::ArcCw);
@@ -215,7 +253,7 @@ void Executor::loadLatheCycleParams() {
   LatheCycleState& s = latheCyc_;
   s.paramsLoaded = true;
   // Machine unit -> current program unit.
-  double k = setup_.initialUnit == modal_.unit           ? 1.0
+  double k = setup_.initialUnit == modal_.unit       ? 1.0
              : setup_.initialUnit == InputUnit::Inch ? 25.4
                                                      : 1.0 / 25.4;
   auto len = [&](const char* key, double fallback) { return setup_.param(key, fallback / k) * k; };
@@ -291,7 +329,8 @@ bool Executor::latheCycle(const Words& w, int kind) {
         // First block: depth and retract (G71 U R, G72 W R) or relief and divisions (G73).
         if (kind == kRoughTurn && w.has('U')) latheCyc_.depth = latheLength(w, 'U', false);
         if (kind == kRoughFace && w.has('W')) latheCyc_.depth = latheLength(w, 'W', false);
-        if ((kind == kRoughTurn || kind == kRoughFace) && w.has('R')) latheCyc_.retract = latheLength(w, 'R', false);
+        if ((kind == kRoughTurn || kind == kRoughFace) && w.has('R'))
+          latheCyc_.retract = latheLength(w, 'R', false);
         if (kind == kPattern) {
           if (w.has('U')) latheCyc_.reliefX = latheLength(w, 'U', false);
           if (w.has('W')) latheCyc_.reliefZ = latheLength(w, 'W', false);
@@ -332,13 +371,16 @@ bool Executor::latheCycle(const Words& w, int kind) {
         return true;  // G70 continues with the next block
       }
       if (kind == kPattern) {
-        lathe::PatternParams p{latheCyc_.reliefX, latheCyc_.reliefZ, allowX, allowZ, latheCyc_.divisions};
+        lathe::PatternParams p{latheCyc_.reliefX, latheCyc_.reliefZ, allowX, allowZ,
+                               latheCyc_.divisions};
         moves = plan([&] { return lathe::patternRepeating(c, p); });
       } else {
         lathe::RoughParams p{latheCyc_.depth, latheCyc_.retract, allowX, allowZ,
                              leastIncrement(setup_.increment, modal_.unit)};
         if (p.depth <= 0) throw AlarmError(AlarmId::CycleIllegalCommand, "depth of cut");
-        moves = plan([&] { return kind == kRoughTurn ? lathe::roughTurning(c, p) : lathe::roughFacing(c, p); });
+        moves = plan([&] {
+          return kind == kRoughTurn ? lathe::roughTurning(c, p) : lathe::roughFacing(c, p);
+        });
       }
       runLathePlan(moves, nullptr, 0);
       // G71-G73 consume the contour: the program goes on after its last block (the caller

@@ -11,7 +11,9 @@
 namespace ncvm {
 
 namespace {
-constexpr uint32_t bit(char letter) { return 1u << (letter - 'A'); }
+constexpr uint32_t bit(char letter) {
+  return 1u << (letter - 'A');
+}
 
 // Type I argument letters -> local variable (fanuc-reference B.7). 0 = not an argument.
 constexpr int kArgVar[26] = {
@@ -21,7 +23,8 @@ constexpr int kArgVar[26] = {
 
 int32_t integerWord(const Words& w, char letter) {
   double v = w.value(letter);
-  if (!std::isfinite(v) || std::fabs(v) > 99999999.0) throw AlarmError(AlarmId::IntegerOverflow, std::string(1, letter));
+  if (!std::isfinite(v) || std::fabs(v) > 99999999.0)
+    throw AlarmError(AlarmId::IntegerOverflow, std::string(1, letter));
   return static_cast<int32_t>(std::llround(v));
 }
 }  // namespace
@@ -105,8 +108,10 @@ void Executor::gatherWords(const Block& b, Words& w) {
       int code10 = static_cast<int>(std::llround(v * 10.0));
       // A G code number the control lacks is still legal when a parameter (6050-6059)
       // makes it call a macro; codeCall() or the modal loop decide.
-      bool called = code10 % 10 == 0 && code10 < 10000 && gCall_[static_cast<size_t>(code10 / 10)] > 0;
-      if (w.ng >= static_cast<int>(w.g.size()) || code10 < 0 || code10 >= 10000 || (!gInfo(code10) && !called)) {
+      bool called =
+          code10 % 10 == 0 && code10 < 10000 && gCall_[static_cast<size_t>(code10 / 10)] > 0;
+      if (w.ng >= static_cast<int>(w.g.size()) || code10 < 0 || code10 >= 10000 ||
+          (!gInfo(code10) && !called)) {
         AlarmError e(AlarmId::ImproperGCode, fmt::format("G{}", v));
         e.col = wd.col;
         throw e;
@@ -127,10 +132,13 @@ void Executor::gatherWords(const Block& b, Words& w) {
     if (w.present & bit(L)) w.twice |= bit(L);
     w.present |= bit(L);
     w.val[static_cast<size_t>(idx)] = v;
-    if (point) w.point |= bit(L);
-    else w.point &= ~bit(L);
+    if (point)
+      w.point |= bit(L);
+    else
+      w.point &= ~bit(L);
     w.col[static_cast<size_t>(idx)] = wd.col;
-    if (L != 'G' && L != 'L' && L != 'N' && L != 'O' && L != 'P' && w.nArgs < static_cast<int>(w.args.size()))
+    if (L != 'G' && L != 'L' && L != 'N' && L != 'O' && L != 'P' &&
+        w.nArgs < static_cast<int>(w.args.size()))
       w.args[static_cast<size_t>(w.nArgs++)] = Words::Arg{L, v, point};
   }
   if (longNumbers) {
@@ -200,7 +208,8 @@ bool Executor::codeCall(const Block& b, Words& w) {
     int prog = g < 10000 ? gCall_[static_cast<size_t>(g / 10)] : 0;
     if (prog <= 0) continue;
     ++frames_.back().pc;
-    macroCallFromWords(findProgram(prog, -1), w.has('L') ? integerWord(w, 'L') : 1, w, FrameKind::Macro, true);
+    macroCallFromWords(findProgram(prog, -1), w.has('L') ? integerWord(w, 'L') : 1, w,
+                       FrameKind::Macro, true);
     return true;
   }
   for (int k = 0; k < w.nm; ++k) {
@@ -218,8 +227,10 @@ void Executor::deriveModal() {
   modal_.motion = modal_.g[1];
   modal_.plane = lathe_ ? modal_.g[16] / 10 : modal_.g[2] / 10;
   modal_.incremental = modal_.g[3] == 910;
-  if (series_ == Series::TA) modal_.feedPerRev = modal_.g[5] == 990;
-  else modal_.feedPerRev = modal_.g[5] == 950;
+  if (series_ == Series::TA)
+    modal_.feedPerRev = modal_.g[5] == 990;
+  else
+    modal_.feedPerRev = modal_.g[5] == 950;
   modal_.css = (lathe_ ? modal_.g[2] : modal_.g[13]) == 960;
   int unitCode = modal_.g[6];
   modal_.unit = (unitCode == 200 || unitCode == 700) ? InputUnit::Inch : InputUnit::Mm;
@@ -299,7 +310,8 @@ void Executor::execNcGeneral(const Block& b) {
       e.col = w.gcol[1];
       throw e;
     }
-    if (!w.has('P') && w.nameIdx < 0) throw AlarmError(AlarmId::ProgramNotFound, "G65/G66 without P");
+    if (!w.has('P') && w.nameIdx < 0)
+      throw AlarmError(AlarmId::ProgramNotFound, "G65/G66 without P");
     const Program* p = findProgram(w.has('P') ? integerWord(w, 'P') : -1, w.nameIdx);
     int repeats = w.has('L') ? integerWord(w, 'L') : 1;
     if (repeats < 0 || repeats > 9999) throw AlarmError(AlarmId::IntegerOverflow, "L");
@@ -347,11 +359,15 @@ void Executor::execNcGeneral(const Block& b) {
       throw e;
     }
     if (code == 670) continue;
-    if (info.group == 0) oneShot = code;
-    else applyModalG(code, info);
+    if (info.group == 0)
+      oneShot = code;
+    else
+      applyModalG(code, info);
     if (info.group == 9) {
-      if (code == 800) cancelCycle();
-      else cycleCommanded = true;
+      if (code == 800)
+        cancelCycle();
+      else
+        cycleCommanded = true;
     }
     // A group-01 code ends canned-cycle mode (mill and lathe drilling cycles).
     if (info.group == 1 && modal_.g[9] != 800) cancelCycle();
@@ -360,14 +376,16 @@ void Executor::execNcGeneral(const Block& b) {
   exactStop_ = oneShot == 90 || (!lathe_ && modal_.g[15] == 610);  // G09 / G61 (time model)
   const bool crcMode = modal_.g[7] != 400 || crcBusy();
   if (!lathe_ && modal_.plane != planeBefore && crc_ && crc_->active())
-    throw AlarmError(AlarmId::CannotChangePlaneInCrc, fmt::format("G{} while G41/G42 vectors are in effect", modal_.plane));
+    throw AlarmError(AlarmId::CannotChangePlaneInCrc,
+                     fmt::format("G{} while G41/G42 vectors are in effect", modal_.plane));
   cornerCheckBlock(w, oneShot, crcMode);
   if (!lathe_) transformRestrictions(oneShot, modal_.g[14] != workBefore);
   if (crcMode) {
     deferring_ = true;
     // Blocks that stop buffering end the lookahead before they run.
     // G27 too: it moves to a checked point, not along the compensated contour.
-    bool stop = oneShot == 270 || oneShot == 280 || oneShot == 300 || oneShot == 290 || oneShot == 530;
+    bool stop =
+        oneShot == 270 || oneShot == 280 || oneShot == 300 || oneShot == 290 || oneShot == 530;
     // G31 after G40: the probe may touch the simulated stock, which must have every held move.
     stop |= oneShot == 310 && modal_.g[7] == 400;
     for (int k = 0; k < w.nm; ++k) {
@@ -388,7 +406,8 @@ void Executor::execNcGeneral(const Block& b) {
     int code = modal_.g[14];
     if (code == 541 || (code == 540 && w.has('P'))) {
       int p = w.has('P') ? integerWord(w, 'P') : 1;
-      if (p < 1 || p > 300) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("G54.1 P{}", p));
+      if (p < 1 || p > 300)
+        throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("G54.1 P{}", p));
       modal_.g[14] = 541;
       modal_.workP = p;
       workIndex_ = kWorkP1 + p - 1;
@@ -403,7 +422,8 @@ void Executor::execNcGeneral(const Block& b) {
     double fv = w.value('F');
     if (fv < 0) throw AlarmError(AlarmId::IllegalMinus, "F");
     // F without a decimal point: whole units per minute, but least increments per revolution.
-    if (!w.hasPoint('F') && !dpi_ && modal_.feedPerRev) fv *= leastIncrement(setup_.increment, modal_.unit);
+    if (!w.hasPoint('F') && !dpi_ && modal_.feedPerRev)
+      fv *= leastIncrement(setup_.increment, modal_.unit);
     modal_.feed = fv;
   }
   if (w.has('E')) modal_.e = w.value('E');
@@ -414,7 +434,8 @@ void Executor::execNcGeneral(const Block& b) {
   }
   if (w.has('H') && !lathe_) {
     int h = integerWord(w, 'H');
-    if (h < 0 || h >= kToolRows) throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("H{}", h));
+    if (h < 0 || h >= kToolRows)
+      throw AlarmError(AlarmId::IllegalOffsetNumber, fmt::format("H{}", h));
     modal_.hOffset = h;
   }
   if (!lathe_ && (modal_.g[8] != lengthBefore || modal_.hOffset != hBefore)) applyToolShift();
@@ -436,8 +457,10 @@ void Executor::execNcGeneral(const Block& b) {
       // T code call (6001#5): the rest of the block runs first, then O9000 with #149 = T.
       w.tCall = true;
     }
-    if (!w.tCall) sink().onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, false});
-    if (lathe_ && !w.tCall) applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
+    if (!w.tCall)
+      sink().onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, false});
+    if (lathe_ && !w.tCall)
+      applyToolShift();  // Tttoo: geometry tt and wear oo shift the coordinates
   }
   auxFunctions(w);
   if (ended_) return;
@@ -498,7 +521,9 @@ void Executor::execNcGeneral(const Block& b) {
         const xform::PlaneAxes pa = xform::planeAxes(modal_.plane);
         auto ijk = [&](size_t k) {
           const char c = "IJK"[k];
-          return w.has(c) ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), static_cast<int>(k))) : 0.0;
+          return w.has(c)
+                     ? static_cast<double>(lengthNm(w.value(c), w.hasPoint(c), static_cast<int>(k)))
+                     : 0.0;
         };
         g39HasDir_ = w.any("IJK");
         g39Dir_ = {ijk(pa.u), ijk(pa.v)};
@@ -582,7 +607,12 @@ void Executor::auxFunctions(Words& w) {
   for (int k = 0; k < w.nm; ++k) {
     int m = w.m[static_cast<size_t>(k)];
     switch (m) {
-      case 0: case 1: case 2: case 30: case 98: case 99:
+      case 0:
+      case 1:
+      case 2:
+      case 30:
+      case 98:
+      case 99:
         break;  // program control, after the motion
       case 3:
       case 4:
@@ -604,7 +634,8 @@ void Executor::auxFunctions(Words& w) {
         break;
       case 6:
         modal_.lastM = m;
-        sink().onTool(ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, true});
+        sink().onTool(
+            ToolEvent{origin_, lathe_ ? latheToolNumber(modal_.tool) : modal_.tool, true});
         break;
       case 29:  // rigid tapping: the next G84/G74 (lathe G84/G88) follows the spindle
         rigidTap_ = true;
@@ -615,10 +646,13 @@ void Executor::auxFunctions(Words& w) {
       case 8:
       case 9:
         modal_.lastM = m;
-        sink().onCoolant(CoolantEvent{origin_, m == 9 ? CoolantState::Off : m == 7 ? CoolantState::Mist : CoolantState::Flood});
+        sink().onCoolant(CoolantEvent{origin_, m == 9   ? CoolantState::Off
+                                               : m == 7 ? CoolantState::Mist
+                                                        : CoolantState::Flood});
         break;
       default:
-        if (int prog = m >= 0 && m < 1000 ? mSubCall_[static_cast<size_t>(m)] : 0; prog > 0 && !frames_.back().codeCalled) {
+        if (int prog = m >= 0 && m < 1000 ? mSubCall_[static_cast<size_t>(m)] : 0;
+            prog > 0 && !frames_.back().codeCalled) {
           // Subprogram-type M code call: the block's other words run first, then the call,
           // which happens with programControl's ordering below (treated as M98).
           w.subCallProgram = prog;

@@ -27,7 +27,8 @@ std::string formatDprnt(double v, int a, int b, bool prt) {
   std::string out;
   if (!prt) {
     out += negative ? '-' : ' ';
-    if (static_cast<int>(digits.size()) < a) out.append(static_cast<size_t>(a) - digits.size(), ' ');
+    if (static_cast<int>(digits.size()) < a)
+      out.append(static_cast<size_t>(a) - digits.size(), ' ');
   } else if (negative) {
     out += '-';
   }
@@ -55,14 +56,16 @@ void Executor::print(const Block& b) {
     } else {
       // BPRNT: value x 10^b as a 32-bit binary number, high byte first.
       double scaled = std::round(v * std::pow(10.0, item.fracDigits));
-      if (std::fabs(scaled) > 2147483647.0) throw AlarmError(AlarmId::IntegerOverflow, "BPRNT value");
+      if (std::fabs(scaled) > 2147483647.0)
+        throw AlarmError(AlarmId::IntegerOverflow, "BPRNT value");
       auto u = static_cast<uint32_t>(static_cast<int32_t>(scaled));
       for (int s = 24; s >= 0; s -= 8) line += static_cast<char>((u >> s) & 0xFF);
     }
   }
   printed_ += line;
   printed_ += '\n';
-  if (printed_.size() > kMaxPrinted) throw AlarmError(AlarmId::OutputError, "DPRNT output over 64 MiB");
+  if (printed_.size() > kMaxPrinted)
+    throw AlarmError(AlarmId::OutputError, "DPRNT output over 64 MiB");
 }
 
 }  // namespace ncvm

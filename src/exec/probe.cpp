@@ -30,8 +30,10 @@ void Executor::skipMove(const Words& w) {
   const ToolSpec* tool = lathe_ ? physicalTool(setup_, current) : nullptr;
   if (!lathe_)
     if (auto it = setup_.tools.find(current); it != setup_.tools.end()) tool = &it->second;
-  if ((probe.tool < 0 || probe.tool == current) && probe.ballDiameter > 0) r = probe.ballDiameter / 2;
-  else if (tool) r = tool->diameter / 2;
+  if ((probe.tool < 0 || probe.tool == current) && probe.ballDiameter > 0)
+    r = probe.ballDiameter / 2;
+  else if (tool)
+    r = tool->diameter / 2;
 
   std::array<int64_t, kMaxAxes> fromM = machine_, toM;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = target[k] + offset_[k];
@@ -52,7 +54,8 @@ void Executor::skipMove(const Words& w) {
   }
   if (t) {
     for (size_t k = 0; k < kMaxAxes; ++k)
-      toM[k] = fromM[k] + static_cast<int64_t>(std::llround(*t * static_cast<double>(toM[k] - fromM[k])));
+      toM[k] = fromM[k] +
+               static_cast<int64_t>(std::llround(*t * static_cast<double>(toM[k] - fromM[k])));
   }
 
   MoveEvent e;
@@ -60,7 +63,8 @@ void Executor::skipMove(const Words& w) {
   e.feed = feed;
   double sq = 0;
   for (int k = 0; k < kMaxAxes; ++k) {
-    double d = toProgramUnits(toM[static_cast<size_t>(k)] - fromM[static_cast<size_t>(k)], k, false);
+    double d =
+        toProgramUnits(toM[static_cast<size_t>(k)] - fromM[static_cast<size_t>(k)], k, false);
     sq += d * d;
   }
   e.length = std::sqrt(sq);
@@ -90,7 +94,8 @@ void Executor::skipMove(const Words& w) {
   ev.hit = t.has_value();
   for (int k = 0; k < kMaxAxes; ++k) {
     ev.position[static_cast<size_t>(k)] = toProgramUnits(skip_[static_cast<size_t>(k)], k, true);
-    ev.mposition[static_cast<size_t>(k)] = toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
+    ev.mposition[static_cast<size_t>(k)] =
+        toProgramUnits(machine_[static_cast<size_t>(k)], k, true);
   }
   sink().onSkip(ev);
   if (!t && probe.missAlarm) throw AlarmError(AlarmId::SkipNotReceived);

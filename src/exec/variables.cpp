@@ -57,7 +57,8 @@ static AlarmError unknownVariable(int64_t n) {
 }
 
 Value Executor::readVar(int64_t n) {
-  if (n >= 1 && n <= 33) return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
+  if (n >= 1 && n <= 33)
+    return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
   if (n >= 100 && n <= 199) return common100_[static_cast<size_t>(n - 100)];
   if (n >= 500 && n <= 999) return mem_.common500[static_cast<size_t>(n - 500)];
   if (n == 0) return Value::vacant();
@@ -155,7 +156,8 @@ void Executor::writeSignalOutput(int n, Value v) {
 Value Executor::readSystem(int64_t n) {
   auto posVar = [&](int64_t base, const std::array<int64_t, kMaxAxes>& nm, bool work) -> Value {
     int slot = axisByNumber(static_cast<int>(n - base));
-    if (slot < 0) throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
+    if (slot < 0)
+      throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
     (void)work;
     return Value::num(toProgramUnits(nm[static_cast<size_t>(slot)], slot, true));
   };
@@ -185,50 +187,75 @@ Value Executor::readSystem(int64_t n) {
   if ((n >= 4102 && n <= 4130) || (n >= 4302 && n <= 4330)) {
     int64_t k = n >= 4300 ? n - 200 : n;
     switch (k) {
-      case 4102: return Value::num(modal_.b);
-      case 4107: return Value::num(modal_.dOffset);
-      case 4108: return Value::num(modal_.e);
-      case 4109: return Value::num(modal_.feed);
-      case 4111: return Value::num(modal_.hOffset);
-      case 4113: return Value::num(modal_.lastM);
-      case 4114: return Value::num(lastN_);
-      case 4115: return Value::num(frames_.back().prog->number >= 0 ? frames_.back().prog->number : 0);
-      case 4119: return Value::num(modal_.speed);
-      case 4120: return Value::num(modal_.tool);
-      case 4130: return Value::num(modal_.workP);
-      default: return Value::vacant();
+      case 4102:
+        return Value::num(modal_.b);
+      case 4107:
+        return Value::num(modal_.dOffset);
+      case 4108:
+        return Value::num(modal_.e);
+      case 4109:
+        return Value::num(modal_.feed);
+      case 4111:
+        return Value::num(modal_.hOffset);
+      case 4113:
+        return Value::num(modal_.lastM);
+      case 4114:
+        return Value::num(lastN_);
+      case 4115:
+        return Value::num(frames_.back().prog->number >= 0 ? frames_.back().prog->number : 0);
+      case 4119:
+        return Value::num(modal_.speed);
+      case 4120:
+        return Value::num(modal_.tool);
+      case 4130:
+        return Value::num(modal_.workP);
+      default:
+        return Value::vacant();
     }
   }
   switch (n) {
-    case 3000: return Value::vacant();
-    case 3001: return Value::num(std::floor(simTime_ * 1000.0 + timerMsOffset_));
-    case 3002: return Value::num(simTime_ / 3600.0 + timerHourOffset_);
-    case 3003: return Value::num(sys3003_);
-    case 3004: return Value::num(sys3004_);
-    case 3005: return Value::num(sys3005_);
-    case 3006: return Value::vacant();
-    case 3007: return Value::num(0);  // mirror image status: none
-    case 3011: return Value::num(static_cast<double>(setup_.date));
+    case 3000:
+      return Value::vacant();
+    case 3001:
+      return Value::num(std::floor(simTime_ * 1000.0 + timerMsOffset_));
+    case 3002:
+      return Value::num(simTime_ / 3600.0 + timerHourOffset_);
+    case 3003:
+      return Value::num(sys3003_);
+    case 3004:
+      return Value::num(sys3004_);
+    case 3005:
+      return Value::num(sys3005_);
+    case 3006:
+      return Value::vacant();
+    case 3007:
+      return Value::num(0);  // mirror image status: none
+    case 3011:
+      return Value::num(static_cast<double>(setup_.date));
     case 3012: {
       // Start time plus simulated time, as HHMMSS.
       int64_t start = setup_.time;
       int64_t secs = (start / 10000) * 3600 + (start / 100 % 100) * 60 + start % 100 +
                      static_cast<int64_t>(simTime_);
       secs %= 86400;
-      return Value::num(static_cast<double>(secs / 3600 * 10000 + secs / 60 % 60 * 100 + secs % 60));
+      return Value::num(
+          static_cast<double>(secs / 3600 * 10000 + secs / 60 % 60 * 100 + secs % 60));
     }
     // System constants (30i, 0i-F): pi and e.
     case 3100:
       return Value::num(3.14159265358979323846);
     case 3101:
       return Value::num(2.71828182845904523536);
-    case 3901: return Value::num(mem_.parts3901);
-    case 3902: return Value::num(mem_.parts3902);
+    case 3901:
+      return Value::num(mem_.parts3901);
+    case 3902:
+      return Value::num(mem_.parts3902);
     case 4000: {
       const Program* main = frames_.front().prog;
       return Value::num(main->number >= 0 ? main->number : 0);
     }
-    default: break;
+    default:
+      break;
   }
   Value out;
   if (offsetVariable(n, &out, nullptr)) return out;
@@ -236,8 +263,9 @@ Value Executor::readSystem(int64_t n) {
 }
 
 void Executor::writeSystem(int64_t n, Value v) {
-  std::string comment =
-      block_ && block_->comment >= 0 ? frames_.back().prog->strings[static_cast<size_t>(block_->comment)] : "";
+  std::string comment = block_ && block_->comment >= 0
+                            ? frames_.back().prog->strings[static_cast<size_t>(block_->comment)]
+                            : "";
   switch (n) {
     case 3000: {
       // Macro alarm 3000+n with the block's comment as its message.
@@ -245,19 +273,34 @@ void Executor::writeSystem(int64_t n, Value v) {
       if (k < 0 || k > 999) throw AlarmError(AlarmId::ArgumentOutOfRange, "#3000 takes 0-999");
       throw AlarmError(fmt::format("MC{}", 3000 + k), comment);
     }
-    case 3001: timerMsOffset_ = v.asNumber() - simTime_ * 1000.0; return;
-    case 3002: timerHourOffset_ = v.asNumber() - simTime_ / 3600.0; return;
-    case 3003: sys3003_ = v.asNumber(); return;
-    case 3004: sys3004_ = v.asNumber(); return;
-    case 3005: sys3005_ = v.asNumber(); return;
+    case 3001:
+      timerMsOffset_ = v.asNumber() - simTime_ * 1000.0;
+      return;
+    case 3002:
+      timerHourOffset_ = v.asNumber() - simTime_ / 3600.0;
+      return;
+    case 3003:
+      sys3003_ = v.asNumber();
+      return;
+    case 3004:
+      sys3004_ = v.asNumber();
+      return;
+    case 3005:
+      sys3005_ = v.asNumber();
+      return;
     case 3006: {
       // Message stop: recorded; the run continues as if cycle start were pressed.
       sink().onMessage(MessageEvent{origin_, comment, "#3006"});
       return;
     }
-    case 3901: mem_.parts3901 = v.asNumber(); return;
-    case 3902: mem_.parts3902 = v.asNumber(); return;
-    default: break;
+    case 3901:
+      mem_.parts3901 = v.asNumber();
+      return;
+    case 3902:
+      mem_.parts3902 = v.asNumber();
+      return;
+    default:
+      break;
   }
   if (n >= 1100 && n <= 1133) return writeSignalOutput(static_cast<int>(n), v);
   if (n == 3007 || n == 3011 || n == 3012 || n == 4000 || (n >= 4001 && n <= 4330) ||

@@ -18,9 +18,9 @@ struct Words {
   std::array<uint16_t, 12> gcol;
   int nm = 0;
   std::array<int32_t, 3> m;
-  int32_t nameIdx = -1;        // <name> word: index into Program::strings
-  int32_t subCallProgram = -1; // M code subprogram call (parameters 6071-6079)
-  bool tCall = false;          // T code calls O9000 (parameter 6001#5) after the block
+  int32_t nameIdx = -1;         // <name> word: index into Program::strings
+  int32_t subCallProgram = -1;  // M code subprogram call (parameters 6071-6079)
+  bool tCall = false;           // T code calls O9000 (parameter 6001#5) after the block
   // ,C (chamfer) and ,R (corner rounding), the 30i comma words.
   bool hasCommaC = false, hasCommaR = false, commaPoint = false;
   double commaValue = 0;

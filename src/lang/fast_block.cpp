@@ -16,7 +16,9 @@ constexpr std::array<bool, 256> kSpace = [] {
   for (char c : {' ', '\t', '\r', '\f', '\v'}) t[static_cast<unsigned char>(c)] = true;
   return t;
 }();
-bool isSpace(char c) { return kSpace[static_cast<unsigned char>(c)]; }
+bool isSpace(char c) {
+  return kSpace[static_cast<unsigned char>(c)];
+}
 bool isDigit(char c) {
   return static_cast<unsigned>(c - '0') < 10u;
 }
@@ -49,7 +51,7 @@ namespace {
 // Inlined into the loop over a run of lines: no call, and no registers saved and restored, per
 // line (about 30 instructions a line).
 [[gnu::always_inline]] inline const char* fastLine(const char* b, uint32_t file, uint32_t line,
-                                                  uint32_t maxLineLength, Program& p) {
+                                                   uint32_t maxLineLength, Program& p) {
   const char* q = b;
   while (isSpace(*q)) ++q;
   if (*q == '\n') return q;  // blank: the general compiler keeps nothing either

@@ -14,20 +14,50 @@ namespace ncvm {
 // Expression bytecode for a small stack machine. Each instruction keeps its column so a
 // run-time error (zero divide) points at the operator.
 enum class Op : uint8_t {
-  Const,     // push consts[arg]
-  Var,       // push variable #arg
-  VarInd,    // pop n, push variable #n
+  Const,   // push consts[arg]
+  Var,     // push variable #arg
+  VarInd,  // pop n, push variable #n
   Neg,
-  Add, Sub, Mul, Div, Mod,
-  And, Or, Xor,           // bitwise on integer values
-  LAnd, LOr, LXor,        // logical on conditions (30i [[a]AND[b]])
-  Eq, Ne, Gt, Ge, Lt, Le,
-  Fn1,       // one-argument function, fn = Fn id
-  Fn2,       // two-argument function (ATAN[a]/[b], ATAN[a,b], POW[a,b])
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,
+  And,
+  Or,
+  Xor,  // bitwise on integer values
+  LAnd,
+  LOr,
+  LXor,  // logical on conditions (30i [[a]AND[b]])
+  Eq,
+  Ne,
+  Gt,
+  Ge,
+  Lt,
+  Le,
+  Fn1,  // one-argument function, fn = Fn id
+  Fn2,  // two-argument function (ATAN[a]/[b], ATAN[a,b], POW[a,b])
 };
 
 enum class Fn : uint8_t {
-  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Bin, Bcd, Round, Fix, Fup, Ln, Exp, Pow, Adp,
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Atan2,
+  Sqrt,
+  Abs,
+  Bin,
+  Bcd,
+  Round,
+  Fix,
+  Fup,
+  Ln,
+  Exp,
+  Pow,
+  Adp,
 };
 
 struct Instr {
@@ -83,24 +113,24 @@ struct Word {
 };
 
 enum class BlockKind : uint8_t {
-  Empty,    // nothing but N, comments, or a program header
-  Nc,       // NC words
-  Assign,   // #a = expr        (lhsVar >= 0) or #[expr] = expr (lhsExpr >= 0)
-  If,       // IF [cond] GOTO target | IF [cond] THEN assignment
-  Goto,     // GOTO target
-  While,    // WHILE [cond] DO m  (cond < 0: plain DO m)
-  End,      // END m
-  Print,    // DPRNT / BPRNT
+  Empty,   // nothing but N, comments, or a program header
+  Nc,      // NC words
+  Assign,  // #a = expr        (lhsVar >= 0) or #[expr] = expr (lhsExpr >= 0)
+  If,      // IF [cond] GOTO target | IF [cond] THEN assignment
+  Goto,    // GOTO target
+  While,   // WHILE [cond] DO m  (cond < 0: plain DO m)
+  End,     // END m
+  Print,   // DPRNT / BPRNT
   Popen,
   Pclos,
-  Error,    // a block the compiler rejected: executing it raises `error`
+  Error,  // a block the compiler rejected: executing it raises `error`
 };
 
 enum class PrintKind : uint8_t { Dprnt, Bprnt };
 
 struct PrintItem {
   bool isVar = false;
-  std::string text;  // literal characters (`*` already turned into a space)
+  std::string text;   // literal characters (`*` already turned into a space)
   int32_t expr = -1;  // variable item: expression index
   uint8_t intDigits = 0, fracDigits = 0;
 };
@@ -108,18 +138,18 @@ struct PrintItem {
 // Operands of the macro statements (and the error of an Error block), kept apart from Block
 // so the NC blocks that make up nearly all of a CAM program stay small (-1 = unused).
 struct MacroOps {
-  int32_t cond = -1;       // condition expression (If, While)
-  int32_t lhsVar = -1;     // Assign: literal variable number
-  int32_t lhsExpr = -1;    // Assign: indirect variable expression
-  int32_t rhs = -1;        // Assign: value expression
-  int32_t gotoLabel = -1;  // If/Goto: literal sequence number
-  int32_t gotoExpr = -1;   // If/Goto: computed target expression
-  int32_t target = -1;     // resolved block index (Goto/If literal target; While: after END;
-                           // End: its While)
-  bool thenAssign = false; // If: THEN form (uses lhs*/rhs)
+  int32_t cond = -1;        // condition expression (If, While)
+  int32_t lhsVar = -1;      // Assign: literal variable number
+  int32_t lhsExpr = -1;     // Assign: indirect variable expression
+  int32_t rhs = -1;         // Assign: value expression
+  int32_t gotoLabel = -1;   // If/Goto: literal sequence number
+  int32_t gotoExpr = -1;    // If/Goto: computed target expression
+  int32_t target = -1;      // resolved block index (Goto/If literal target; While: after END;
+                            // End: its While)
+  bool thenAssign = false;  // If: THEN form (uses lhs*/rhs)
   PrintKind printKind = PrintKind::Dprnt;
   uint32_t firstPrint = 0, nPrint = 0;  // into Program::prints
-  int32_t error = -1;      // Error: index into Program::errors
+  int32_t error = -1;                   // Error: index into Program::errors
 };
 
 struct Block {
@@ -129,10 +159,10 @@ struct Block {
   uint8_t flags = 0;      // BlockFlags
   uint16_t nWords = 0;
   uint32_t firstWord = 0;
-  SourceLoc loc;           // start of the block
-  int32_t n = -1;          // sequence number, -1 = none
-  int32_t comment = -1;    // index into Program::strings of the block's first comment
-  int32_t ops = -1;        // index into Program::macroOps; -1 for NC and empty blocks
+  SourceLoc loc;         // start of the block
+  int32_t n = -1;        // sequence number, -1 = none
+  int32_t comment = -1;  // index into Program::strings of the block's first comment
+  int32_t ops = -1;      // index into Program::macroOps; -1 for NC and empty blocks
 };
 // 36 bytes: a 1,000,000-line CAM program holds 1,000,000 blocks (the enclosing loop of each,
 // which only programs with loops or GOTOs need, is Program::loopParents).
@@ -140,10 +170,10 @@ struct Block {
 class ProgramStream;
 
 struct Program {
-  int32_t number = -1;    // O number; -1 for a file without O header
-  std::string name;       // <name> programs, or the file stem for anonymous ones
-  std::string label;      // how traces and alarms name it: "O0100" or the name
-  SourceLoc loc;          // header location
+  int32_t number = -1;  // O number; -1 for a file without O header
+  std::string name;     // <name> programs, or the file stem for anonymous ones
+  std::string label;    // how traces and alarms name it: "O0100" or the name
+  SourceLoc loc;        // header location
   std::vector<Block> blocks;
   std::vector<Word> words;
   std::vector<MacroOps> macroOps;  // the macro and error blocks' operands (Block::ops)

@@ -72,8 +72,9 @@ std::string_view StreamChunks::next() {
     if (left_ == 0) {
       hint_ = 1 + countNewlines(std::string_view(buf_.get(), have_));
     } else {
-      const double perByte = static_cast<double>(countNewlines(std::string_view(buf_.get(), given_))) /
-                             static_cast<double>(given_);
+      const double perByte =
+          static_cast<double>(countNewlines(std::string_view(buf_.get(), given_))) /
+          static_cast<double>(given_);
       hint_ = static_cast<size_t>(perByte * static_cast<double>(size_) * 17 / 16) + 16;
     }
   }

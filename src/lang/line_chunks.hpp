@@ -52,9 +52,9 @@ class StreamChunks final : public LineChunks {
   uint64_t size_, left_;
   std::unique_ptr<char[]> buf_;
   size_t cap_ = 0;
-  size_t have_ = 0;     // bytes in buf_
-  size_t given_ = 0;    // buf_[0, given_) was returned by the last next()
-  bool first_ = true;   // the first piece sets hint_
+  size_t have_ = 0;    // bytes in buf_
+  size_t given_ = 0;   // buf_[0, given_) was returned by the last next()
+  bool first_ = true;  // the first piece sets hint_
   size_t hint_ = 1;
 };
 

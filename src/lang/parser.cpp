@@ -22,13 +22,23 @@ constexpr int kMaxBracketNesting = 5;  // fanuc-reference B.3: five levels, func
 
 enum class Type : uint8_t { Num, Bool };
 
-bool isUpper(char c) { return c >= 'A' && c <= 'Z'; }
-bool isLower(char c) { return c >= 'a' && c <= 'z'; }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+bool isUpper(char c) {
+  return c >= 'A' && c <= 'Z';
+}
+bool isLower(char c) {
+  return c >= 'a' && c <= 'z';
+}
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
 // What may follow the closing '%' without being program text: spaces, and the bytes tape
 // readers and DOS tools add (NUL feed, DEL, SUB = the DOS end-of-file mark 0x1A).
-bool isFiller(char c) { return isSpace(c) || c == '\0' || c == '\x1a' || c == '\x7f'; }
+bool isFiller(char c) {
+  return isSpace(c) || c == '\0' || c == '\x1a' || c == '\x7f';
+}
 bool onlyFiller(std::string_view s) {
   return std::all_of(s.begin(), s.end(), isFiller);
 }
@@ -55,11 +65,11 @@ struct FnName {
   Fn fn;
 };
 constexpr FnName kFunctions[] = {
-    {"SIN", Fn::Sin},   {"COS", Fn::Cos},   {"TAN", Fn::Tan},     {"ASIN", Fn::Asin},
-    {"ACOS", Fn::Acos}, {"ATAN", Fn::Atan}, {"ATN", Fn::Atan},    {"SQRT", Fn::Sqrt},
-    {"SQR", Fn::Sqrt},  {"ABS", Fn::Abs},   {"BIN", Fn::Bin},     {"BCD", Fn::Bcd},
-    {"ROUND", Fn::Round}, {"RND", Fn::Round}, {"FIX", Fn::Fix}, {"FUP", Fn::Fup},
-    {"LN", Fn::Ln},     {"EXP", Fn::Exp},   {"POW", Fn::Pow},     {"ADP", Fn::Adp},
+    {"SIN", Fn::Sin},     {"COS", Fn::Cos},   {"TAN", Fn::Tan},  {"ASIN", Fn::Asin},
+    {"ACOS", Fn::Acos},   {"ATAN", Fn::Atan}, {"ATN", Fn::Atan}, {"SQRT", Fn::Sqrt},
+    {"SQR", Fn::Sqrt},    {"ABS", Fn::Abs},   {"BIN", Fn::Bin},  {"BCD", Fn::Bcd},
+    {"ROUND", Fn::Round}, {"RND", Fn::Round}, {"FIX", Fn::Fix},  {"FUP", Fn::Fup},
+    {"LN", Fn::Ln},       {"EXP", Fn::Exp},   {"POW", Fn::Pow},  {"ADP", Fn::Adp},
 };
 
 class Compiler {
@@ -102,8 +112,8 @@ class Compiler {
   ParsedFile out_;
   Program* prog_ = nullptr;
   Block blk_;
-  MacroOps ops_;  // the macro operands of blk_ (stored only for macro blocks)
-  int depth_ = 0;            // bracket nesting inside the current expression
+  MacroOps ops_;               // the macro operands of blk_ (stored only for macro blocks)
+  int depth_ = 0;              // bracket nesting inside the current expression
   bool sawStatement_ = false;  // a macro statement is in this block
   bool inWhile_ = false;       // the block's WHILE is being compiled
   uint16_t ncWords_ = 0;
@@ -352,7 +362,8 @@ size_t Compiler::tapeMark(size_t after, size_t e) {
 void Compiler::parseLine(size_t b, size_t e) {
   // Most lines hold none of '(', ';' and '%': three memchr calls find that out quickly.
   const void* line = s_.data() + b;
-  if (!std::memchr(line, '(', e - b) && !std::memchr(line, ';', e - b) && !std::memchr(line, '%', e - b)) {
+  if (!std::memchr(line, '(', e - b) && !std::memchr(line, ';', e - b) &&
+      !std::memchr(line, '%', e - b)) {
     parseBlock(b, e);
     return;
   }
@@ -427,7 +438,8 @@ void Compiler::parseBlock(size_t b, size_t e) {
     Alarm a{err.code(), err.text(), SourceLoc{file_, line_, err.col ? err.col : blk_.loc.col},
             blk_.n >= 0 ? std::optional<int64_t>(blk_.n) : std::nullopt, p.number};
     p.errors.push_back(std::move(a));
-    if (inWhile_ && blk_.skipLevel == 0) p.lostLoops.push_back(static_cast<int32_t>(p.errors.size() - 1));
+    if (inWhile_ && blk_.skipLevel == 0)
+      p.lostLoops.push_back(static_cast<int32_t>(p.errors.size() - 1));
     Block bad = blk_;
     bad.kind = BlockKind::Error;
     bad.nWords = 0;
@@ -886,7 +898,8 @@ void Compiler::parseWhile() {
   if (peek() != '[') fail(AlarmId::MacroStatementFormat, "WHILE needs [condition]", at);
   depth_ = 0;
   uint32_t begin = static_cast<uint32_t>(prog_->code.size());
-  if (parseBracket() != Type::Bool) fail(AlarmId::IllegalExpressionFormat, "WHILE needs a condition", at);
+  if (parseBracket() != Type::Bool)
+    fail(AlarmId::IllegalExpressionFormat, "WHILE needs a condition", at);
   prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
   int32_t cond = static_cast<int32_t>(prog_->exprs.size() - 1);
   skipSpaces();
@@ -950,7 +963,8 @@ void Compiler::parsePrint(PrintKind kind) {
       prog_->exprs.push_back(ExprRange{begin, static_cast<uint32_t>(prog_->code.size())});
       item.expr = static_cast<int32_t>(prog_->exprs.size() - 1);
       skipSpaces();
-      if (peek() != '[') fail(AlarmId::MacroStatementFormat, "variable needs a [digits] format", col());
+      if (peek() != '[')
+        fail(AlarmId::MacroStatementFormat, "variable needs a [digits] format", col());
       ++i_;
       std::string digits;
       while (isDigit(peek())) digits += peek(), ++i_;
@@ -1040,11 +1054,16 @@ Type Compiler::parseSum() {
     char c = peek();
     Op op;
     size_t len = 1;
-    if (c == '+') op = Op::Add;
-    else if (c == '-') op = Op::Sub;
-    else if (operatorAt("OR")) op = Op::Or, len = 2;
-    else if (operatorAt("XOR")) op = Op::Xor, len = 3;
-    else return a;
+    if (c == '+')
+      op = Op::Add;
+    else if (c == '-')
+      op = Op::Sub;
+    else if (operatorAt("OR"))
+      op = Op::Or, len = 2;
+    else if (operatorAt("XOR"))
+      op = Op::Xor, len = 3;
+    else
+      return a;
     i_ += len;
     emit(typedOp(op, a, parseTerm(), at), at);
   }
@@ -1055,7 +1074,8 @@ Type Compiler::parseSum() {
 Op Compiler::typedOp(Op op, Type a, Type b, uint32_t at) const {
   bool logical = op == Op::And || op == Op::Or || op == Op::Xor;
   if (!logical) {
-    if (a != Type::Num || b != Type::Num) fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
+    if (a != Type::Num || b != Type::Num)
+      fail(AlarmId::IllegalExpressionFormat, "arithmetic on a condition", at);
     return op;
   }
   if (a != b) fail(AlarmId::IllegalExpressionFormat, "mixing a condition and a value", at);
@@ -1071,11 +1091,16 @@ Type Compiler::parseTerm() {
     char c = peek();
     Op op;
     size_t len = 1;
-    if (c == '*') op = Op::Mul;
-    else if (c == '/') op = Op::Div;
-    else if (operatorAt("AND")) op = Op::And, len = 3;
-    else if (operatorAt("MOD")) op = Op::Mod, len = 3;
-    else return a;
+    if (c == '*')
+      op = Op::Mul;
+    else if (c == '/')
+      op = Op::Div;
+    else if (operatorAt("AND"))
+      op = Op::And, len = 3;
+    else if (operatorAt("MOD"))
+      op = Op::Mod, len = 3;
+    else
+      return a;
     i_ += len;
     emit(typedOp(op, a, parseUnary(), at), at);
   }
@@ -1158,7 +1183,8 @@ Type Compiler::parsePrimary() {
       if (name != f.name) continue;
       i_ += n;
       skipSpaces();
-      if (peek() != '[') fail(AlarmId::IllegalExpressionFormat, std::string(name) + " needs [", col());
+      if (peek() != '[')
+        fail(AlarmId::IllegalExpressionFormat, std::string(name) + " needs [", col());
       uint32_t open = col();
       ++i_;
       if (++depth_ > kMaxBracketNesting) fail(AlarmId::TooManyBrackets, {}, open);
@@ -1201,8 +1227,10 @@ Type Compiler::parsePrimary() {
         emit(Op::Fn1, at, only.arg, Fn::Adp);
         return Type::Num;
       }
-      if (two) emit(Op::Fn2, at, 0, f.fn == Fn::Atan ? Fn::Atan2 : Fn::Pow);
-      else emit(Op::Fn1, at, 0, f.fn);
+      if (two)
+        emit(Op::Fn2, at, 0, f.fn == Fn::Atan ? Fn::Atan2 : Fn::Pow);
+      else
+        emit(Op::Fn1, at, 0, f.fn);
       return Type::Num;
     }
     fail(AlarmId::IllegalExpressionFormat, "unknown word '" + std::string(name) + "'", at);
@@ -1232,17 +1260,30 @@ PieceCompiler::PieceCompiler(LineChunks& chunks, uint32_t fileId, std::string_vi
                              const ParseOptions& options)
     : impl_(std::make_unique<Impl>(Impl{Compiler(chunks, fileId, stem, options)})) {}
 PieceCompiler::~PieceCompiler() = default;
-bool PieceCompiler::next() { return impl_->compiler.nextPiece(); }
-ParsedFile& PieceCompiler::parsed() { return impl_->compiler.parsed(); }
-void PieceCompiler::continueInto(Program& p) { impl_->compiler.continueInto(p); }
-bool PieceCompiler::hasControlFlow() const { return impl_->compiler.hasControlFlow(); }
-bool PieceCompiler::onlyComments() const { return impl_->compiler.onlyComments(); }
-uint32_t PieceCompiler::line() const { return impl_->compiler.line(); }
+bool PieceCompiler::next() {
+  return impl_->compiler.nextPiece();
+}
+ParsedFile& PieceCompiler::parsed() {
+  return impl_->compiler.parsed();
+}
+void PieceCompiler::continueInto(Program& p) {
+  impl_->compiler.continueInto(p);
+}
+bool PieceCompiler::hasControlFlow() const {
+  return impl_->compiler.hasControlFlow();
+}
+bool PieceCompiler::onlyComments() const {
+  return impl_->compiler.onlyComments();
+}
+uint32_t PieceCompiler::line() const {
+  return impl_->compiler.line();
+}
 
 void resolveStructure(Program& p) {
   auto structural = [&](const Block& b, AlarmId id, std::string detail) {
-    Alarm a{alarmCode(id), std::string(alarmMessage(id)) + (detail.empty() ? "" : " (" + detail + ")"),
-            b.loc, b.n >= 0 ? std::optional<int64_t>(b.n) : std::nullopt, p.number};
+    Alarm a{alarmCode(id),
+            std::string(alarmMessage(id)) + (detail.empty() ? "" : " (" + detail + ")"), b.loc,
+            b.n >= 0 ? std::optional<int64_t>(b.n) : std::nullopt, p.number};
     p.structural.push_back(std::move(a));
   };
   // DO/END pairing: ids 1..3, properly nested, not crossing.
@@ -1258,8 +1299,8 @@ void resolveStructure(Program& p) {
       }
       for (uint32_t o : open)
         if (p.blocks[o].loopId == b.loopId)
-          structural(b, AlarmId::IllegalLoopNumber, "DO " + std::to_string(b.loopId) + " inside DO " +
-                                                        std::to_string(b.loopId));
+          structural(b, AlarmId::IllegalLoopNumber,
+                     "DO " + std::to_string(b.loopId) + " inside DO " + std::to_string(b.loopId));
       open.push_back(k);
     } else if (b.kind == BlockKind::End) {
       if (b.loopId < 1 || b.loopId > 3) {
@@ -1267,10 +1308,11 @@ void resolveStructure(Program& p) {
         continue;
       }
       if (open.empty() || p.blocks[open.back()].loopId != b.loopId) {
-        structural(b, AlarmId::IllegalLoopNumber,
-                   "END " + std::to_string(b.loopId) +
-                       (open.empty() ? " without DO" : " crosses DO " +
-                                                          std::to_string(p.blocks[open.back()].loopId)));
+        structural(
+            b, AlarmId::IllegalLoopNumber,
+            "END " + std::to_string(b.loopId) +
+                (open.empty() ? " without DO"
+                              : " crosses DO " + std::to_string(p.blocks[open.back()].loopId)));
         continue;
       }
       uint32_t w = open.back();
@@ -1280,7 +1322,8 @@ void resolveStructure(Program& p) {
       p.ops(p.blocks[w]).target = static_cast<int32_t>(k + 1);
     }
   }
-  for (uint32_t o : open) structural(p.blocks[o], AlarmId::MissingEnd, "DO " + std::to_string(p.blocks[o].loopId));
+  for (uint32_t o : open)
+    structural(p.blocks[o], AlarmId::MissingEnd, "DO " + std::to_string(p.blocks[o].loopId));
 
   // Literal GOTO targets: must exist and must not jump into a loop.
   for (uint32_t k = 0; k < p.blocks.size(); ++k) {
@@ -1290,7 +1333,8 @@ void resolveStructure(Program& p) {
     if ((b.kind == BlockKind::If && o.thenAssign) || o.gotoLabel < 0) continue;
     int32_t t = p.findLabel(o.gotoLabel, k);
     if (t < 0) {
-      structural(b, AlarmId::IllegalMacroSequence, "N" + std::to_string(o.gotoLabel) + " not found");
+      structural(b, AlarmId::IllegalMacroSequence,
+                 "N" + std::to_string(o.gotoLabel) + " not found");
       continue;
     }
     o.target = t;
@@ -1299,9 +1343,11 @@ void resolveStructure(Program& p) {
       bool enclosesSource = false;
       for (int32_t s = p.loopParents[k]; s >= 0; s = p.loopParents[s])
         if (s == l) enclosesSource = true;
-      if (static_cast<uint32_t>(t) == static_cast<uint32_t>(l)) break;  // jumping to the WHILE itself
+      if (static_cast<uint32_t>(t) == static_cast<uint32_t>(l))
+        break;  // jumping to the WHILE itself
       if (!enclosesSource) {
-        structural(b, AlarmId::IllegalLoopNumber, "GOTO " + std::to_string(o.gotoLabel) + " jumps into a loop");
+        structural(b, AlarmId::IllegalLoopNumber,
+                   "GOTO " + std::to_string(o.gotoLabel) + " jumps into a loop");
         break;
       }
     }

@@ -64,7 +64,7 @@ class PieceCompiler {
   // The open program has no header and nothing but comments yet: an O header that follows
   // replaces it (a title comment before the O number is not a program of its own).
   bool onlyComments() const;
-  uint32_t line() const;        // lines compiled so far
+  uint32_t line() const;  // lines compiled so far
 
  private:
   struct Impl;

@@ -23,8 +23,9 @@ std::vector<const Program*> ProgramStore::addChunks(LineChunks& chunks, const st
   std::string stem = std::filesystem::path(name).stem().string();
   ParsedFile parsed = parseProgramChunks(chunks, id, stem, options_);
   if (parsed.unreadLine)
-    warnings_.push_back(fmt::format("{}:{}: text after the closing '%' is not read (the tape ends there)",
-                                    name, parsed.unreadLine));
+    warnings_.push_back(
+        fmt::format("{}:{}: text after the closing '%' is not read (the tape ends there)", name,
+                    parsed.unreadLine));
   std::vector<const Program*> added;
   for (auto& p : parsed.programs) {
     p.label = p.displayName();

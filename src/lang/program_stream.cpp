@@ -105,8 +105,8 @@ void ProgramStream::start() {
       break;
   // What StreamScan accepts compiles to one program without loops or jumps; anything else
   // (a file of nothing but comments, say) is loaded whole by the caller instead.
-  usable_ = parsed.programs.size() == 1 && !compiler_->hasControlFlow() &&
-            !compiler_->onlyComments();
+  usable_ =
+      parsed.programs.size() == 1 && !compiler_->hasControlFlow() && !compiler_->onlyComments();
   if (!usable_) return;
   Program& first = parsed.programs.front();
   if (!prog_.stream) {  // the first start: the program is new
@@ -151,11 +151,12 @@ bool ProgramStream::advance() {
   return false;
 }
 
-bool ProgramStream::unchanged() const { return identityOf(path_) == identity_; }
+bool ProgramStream::unchanged() const {
+  return identityOf(path_) == identity_;
+}
 
 void ProgramStream::checkUnchanged() const {
-  if (!unchanged())
-    throw AlarmError(AlarmId::ProgramFileChanged, path_ + " changed while it ran");
+  if (!unchanged()) throw AlarmError(AlarmId::ProgramFileChanged, path_ + " changed while it ran");
 }
 
 uint32_t ProgramStream::materialize() {

@@ -75,7 +75,7 @@ class ProgramStream {
   };
   static Identity identityOf(const std::string& path);
   void start();
-  bool compileNext();  // one more piece into the program; records it
+  bool compileNext();           // one more piece into the program; records it
   bool unchanged() const;       // the file is still the one opened (identity_)
   void checkUnchanged() const;  // PS9007 otherwise
 

@@ -18,7 +18,7 @@ constexpr int kWorkExt = 0;
 constexpr int kWorkG54 = 1;
 constexpr int kWorkP1 = 7;
 constexpr int kWorkTables = kWorkP1 + 300;
-std::string workOffsetName(int index);     // "EXT", "G54", "G54.1 P7"
+std::string workOffsetName(int index);         // "EXT", "G54", "G54.1 P7"
 int workOffsetIndex(const std::string& name);  // -1 if not a work offset name
 
 // One tool offset number. Mill (memory C): field 0 = H (length), 2 = D (radius).
@@ -33,7 +33,8 @@ struct ToolOffsetRow {
 constexpr int kToolRows = 1000;  // numbers 0..999 (0 = no offset)
 
 struct MachineMemory {
-  std::vector<std::array<int64_t, kMaxAxes>> work = std::vector<std::array<int64_t, kMaxAxes>>(kWorkTables);
+  std::vector<std::array<int64_t, kMaxAxes>> work =
+      std::vector<std::array<int64_t, kMaxAxes>>(kWorkTables);
   std::vector<ToolOffsetRow> tools = std::vector<ToolOffsetRow>(kToolRows);
   std::array<Value, 500> common500{};
   double parts3901 = 0, parts3902 = 0;

@@ -20,10 +20,9 @@ namespace {
 // Friendly names of bit parameters, as Fanuc manuals spell them.
 const std::map<std::string, std::string>& parameterAliases() {
   static const std::map<std::string, std::string> aliases = {
-      {"DPI", "3401#0"}, {"NAT", "6004#0"}, {"LRP", "1401#1"}, {"PRT", "6001#1"},
-      {"TCS", "6001#5"}, {"CCV", "6001#6"}, {"CLV", "6001#7"}, {"SBM", "6000#5"},
-      {"M3B", "3404#7"}, {"TVC", "0000#0"}, {"CIR", "3403#5"}, {"LGN", "5002#1"},
-      {"F16", "6008#0"},
+      {"DPI", "3401#0"}, {"NAT", "6004#0"}, {"LRP", "1401#1"}, {"PRT", "6001#1"}, {"TCS", "6001#5"},
+      {"CCV", "6001#6"}, {"CLV", "6001#7"}, {"SBM", "6000#5"}, {"M3B", "3404#7"}, {"TVC", "0000#0"},
+      {"CIR", "3403#5"}, {"LGN", "5002#1"}, {"F16", "6008#0"},
   };
   return aliases;
 }
@@ -138,10 +137,14 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
       s.programNumberDigits = static_cast<int>(d);
     } else if (rest == "increment") {
       const auto& g = asString(v, w);
-      if (g == "IS-A") s.increment = IncrementSystem::IsA;
-      else if (g == "IS-B") s.increment = IncrementSystem::IsB;
-      else if (g == "IS-C") s.increment = IncrementSystem::IsC;
-      else bad(w, "expected \"IS-A\", \"IS-B\" or \"IS-C\"");
+      if (g == "IS-A")
+        s.increment = IncrementSystem::IsA;
+      else if (g == "IS-B")
+        s.increment = IncrementSystem::IsB;
+      else if (g == "IS-C")
+        s.increment = IncrementSystem::IsC;
+      else
+        bad(w, "expected \"IS-A\", \"IS-B\" or \"IS-C\"");
     } else if (rest == "units") {
       const auto& g = asString(v, w);
       if (g != "mm" && g != "inch") bad(w, "expected \"mm\" or \"inch\"");
@@ -156,7 +159,9 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     std::string p = head == "parameters" ? rest : key;
     if (auto it = parameterAliases().find(p); it != parameterAliases().end()) p = it->second;
     if (!isParameterNumber(p) && !isAxisParameter(p))
-      bad(w, "a parameter is a number like 3401#0 or 3410 (5421.X for one axis), or an alias (DPI, NAT, LRP, ...)");
+      bad(w,
+          "a parameter is a number like 3401#0 or 3410 (5421.X for one axis), or an alias (DPI, "
+          "NAT, LRP, ...)");
     const double value = asNumber(v, w);
     // A bit parameter (3401#0, DPI) holds 0 or 1, as on the control's parameter screen.
     if (p.find('#') != std::string::npos && value != 0 && value != 1)
@@ -171,8 +176,10 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     return;
   }
   if (head == "switches") {
-    if (rest == "optional_stop") s.optionalStop = asBool(v, w);
-    else bad(w, "unknown key");
+    if (rest == "optional_stop")
+      s.optionalStop = asBool(v, w);
+    else
+      bad(w, "unknown key");
     return;
   }
   if (head == "limits") {
@@ -180,31 +187,45 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
       if (!(d > 0)) bad(w, "must be positive");
       return d;
     };
-    if (rest == "max_blocks") s.limits.maxBlocks = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
-    else if (rest == "max_time_s") s.limits.maxTimeSeconds = positive(asNumber(v, w));
-    else if (rest == "max_line_length") s.limits.maxLineLength = static_cast<uint32_t>(positive(static_cast<double>(asInteger(v, w))));
-    else if (rest == "max_file_bytes") s.limits.maxFileBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
-    else if (rest == "max_trace_bytes") s.limits.maxTraceBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
+    if (rest == "max_blocks")
+      s.limits.maxBlocks = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "max_time_s")
+      s.limits.maxTimeSeconds = positive(asNumber(v, w));
+    else if (rest == "max_line_length")
+      s.limits.maxLineLength =
+          static_cast<uint32_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "max_file_bytes")
+      s.limits.maxFileBytes = static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "max_trace_bytes")
+      s.limits.maxTraceBytes =
+          static_cast<uint64_t>(positive(static_cast<double>(asInteger(v, w))));
     else if (rest == "macro_nesting") {
       int64_t n = asInteger(v, w);
       // Locals #1-#33 exist for levels 0..15 (the main program and 15 macro levels).
       if (n < 1 || n > 15) bad(w, "macro_nesting is 1 to 15");
       s.limits.macroNesting = static_cast<int>(n);
-    }
-    else if (rest == "subprogram_nesting") s.limits.subprogramNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
-    else if (rest == "total_nesting") s.limits.totalNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
-    else bad(w, "unknown key");
+    } else if (rest == "subprogram_nesting")
+      s.limits.subprogramNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
+    else if (rest == "total_nesting")
+      s.limits.totalNesting = static_cast<int>(positive(static_cast<double>(asInteger(v, w))));
+    else
+      bad(w, "unknown key");
     return;
   }
   if (head == "clock") {
-    if (rest == "date") s.date = asInteger(v, w);
-    else if (rest == "time") s.time = asInteger(v, w);
-    else bad(w, "unknown key");
+    if (rest == "date")
+      s.date = asInteger(v, w);
+    else if (rest == "time")
+      s.time = asInteger(v, w);
+    else
+      bad(w, "unknown key");
     return;
   }
   if (head == "output") {
-    if (rest == "dprnt") s.dprntPath = asString(v, w);
-    else bad(w, "unknown key");
+    if (rest == "dprnt")
+      s.dprntPath = asString(v, w);
+    else
+      bad(w, "unknown key");
     return;
   }
   if (head == "vars") {
@@ -256,19 +277,28 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     std::string axis = rest.substr(0, d2);
     std::string field = d2 == std::string::npos ? "" : rest.substr(d2 + 1);
     static const std::string names = "XYZABC";
-    if (axis.size() != 1 || names.find(axis[0]) == std::string::npos) bad(w, "axes are X Y Z A B C");
+    if (axis.size() != 1 || names.find(axis[0]) == std::string::npos)
+      bad(w, "axes are X Y Z A B C");
     AxisConfig& a = s.axes[names.find(axis[0])];
     a.present = true;
-    if (field == "present") a.present = asBool(v, w);
-    else if (field == "rapid") a.rapidRate = asNumber(v, w);
-    else if (field == "initial") a.initial = asNumber(v, w);
-    else if (field == "rotary") a.rotary = asBool(v, w);
-    else if (field == "diameter") a.diameter = asBool(v, w);
-    else if (field == "min") a.min = asNumber(v, w);
-    else if (field == "max") a.max = asNumber(v, w);
+    if (field == "present")
+      a.present = asBool(v, w);
+    else if (field == "rapid")
+      a.rapidRate = asNumber(v, w);
+    else if (field == "initial")
+      a.initial = asNumber(v, w);
+    else if (field == "rotary")
+      a.rotary = asBool(v, w);
+    else if (field == "diameter")
+      a.diameter = asBool(v, w);
+    else if (field == "min")
+      a.min = asNumber(v, w);
+    else if (field == "max")
+      a.max = asNumber(v, w);
     else if (field == "reference") {
       const auto* arr = std::get_if<std::vector<double>>(&v);
-      if (!arr || arr->empty() || arr->size() > 4) bad(w, "expected an array of 1 to 4 numbers (G28, G30 P2..P4)");
+      if (!arr || arr->empty() || arr->size() > 4)
+        bad(w, "expected an array of 1 to 4 numbers (G28, G30 P2..P4)");
       for (size_t k = 0; k < arr->size(); ++k) a.reference[k] = (*arr)[k];
     } else {
       bad(w, "unknown axis key (present, rapid, initial, rotary, diameter, reference, min, max)");
@@ -283,7 +313,8 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     std::string axis;
     if (idx < 0) {
       auto d = rest.rfind('.');
-      if (d != std::string::npos) idx = workOffsetIndex(rest.substr(0, d)), axis = rest.substr(d + 1);
+      if (d != std::string::npos)
+        idx = workOffsetIndex(rest.substr(0, d)), axis = rest.substr(d + 1);
     }
     if (idx < 0) bad(w, "work offsets are EXT, G54-G59 or \"G54.1 P1\"-\"G54.1 P300\"");
     auto& row = s.workOffsets[idx];
@@ -295,7 +326,8 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
         if (s.axes[static_cast<size_t>(slot)].present) row[static_cast<size_t>(slot)] = (*arr)[k++];
       if (k < arr->size()) bad(w, "more values than the machine has axes");
     } else {
-      if (axis.size() != 1 || names.find(axis[0]) == std::string::npos) bad(w, "axis letters are X Y Z A B C");
+      if (axis.size() != 1 || names.find(axis[0]) == std::string::npos)
+        bad(w, "axis letters are X Y Z A B C");
       row[names.find(axis[0])] = asNumber(v, w);
     }
     return;
@@ -308,20 +340,29 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     if (r.ec != std::errc() || n < 1 || n >= kToolRows) bad(w, "tool offset numbers are 1-999");
     ToolOffsetSpec& t = s.toolOffsets[n];
     static const std::map<std::string, std::pair<int, bool>> fields = {
-        {"h_geometry", {kFieldXorH, false}}, {"h_wear", {kFieldXorH, true}},
-        {"d_geometry", {kFieldRorD, false}}, {"d_wear", {kFieldRorD, true}},
-        {"x", {kFieldXorH, false}},          {"x_wear", {kFieldXorH, true}},
-        {"z", {kFieldZ, false}},             {"z_wear", {kFieldZ, true}},
-        {"r", {kFieldRorD, false}},          {"r_wear", {kFieldRorD, true}},
-        {"y", {kFieldY, false}},             {"y_wear", {kFieldY, true}}};
+        {"h_geometry", {kFieldXorH, false}},
+        {"h_wear", {kFieldXorH, true}},
+        {"d_geometry", {kFieldRorD, false}},
+        {"d_wear", {kFieldRorD, true}},
+        {"x", {kFieldXorH, false}},
+        {"x_wear", {kFieldXorH, true}},
+        {"z", {kFieldZ, false}},
+        {"z_wear", {kFieldZ, true}},
+        {"r", {kFieldRorD, false}},
+        {"r_wear", {kFieldRorD, true}},
+        {"y", {kFieldY, false}},
+        {"y_wear", {kFieldY, true}}};
     if (field == "t" || field == "tip") {
       int64_t tip = asInteger(v, w);
       if (tip < 0 || tip > 9) bad(w, "imaginary tip direction is 0-9");
       t.tip = static_cast<int>(tip);
     } else if (auto it = fields.find(field); it != fields.end()) {
-      (it->second.second ? t.wear : t.geometry)[static_cast<size_t>(it->second.first)] = asNumber(v, w);
+      (it->second.second ? t.wear : t.geometry)[static_cast<size_t>(it->second.first)] =
+          asNumber(v, w);
     } else {
-      bad(w, "tool offset fields: h_geometry h_wear d_geometry d_wear (mill); x z r t y and x_wear z_wear r_wear y_wear (lathe)");
+      bad(w,
+          "tool offset fields: h_geometry h_wear d_geometry d_wear (mill); x z r t y and x_wear "
+          "z_wear r_wear y_wear (lathe)");
     }
     return;
   }
@@ -338,23 +379,35 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
       bool ok = false;
       for (auto* k : kinds) ok |= t.type == k;
       if (!ok) bad(w, "tool types: flat ball bull face drill probe insert");
-    } else if (field == "diameter") t.diameter = asNumber(v, w);
-    else if (field == "corner_radius") t.cornerRadius = asNumber(v, w);
-    else if (field == "length") t.length = asNumber(v, w);
-    else if (field == "point_angle") t.pointAngle = asNumber(v, w);
-    else if (field == "flute_length") t.fluteLength = asNumber(v, w);
-    else if (field == "nose_radius") t.noseRadius = asNumber(v, w);
-    else if (field == "tip") t.tip = static_cast<int>(asInteger(v, w));
+    } else if (field == "diameter")
+      t.diameter = asNumber(v, w);
+    else if (field == "corner_radius")
+      t.cornerRadius = asNumber(v, w);
+    else if (field == "length")
+      t.length = asNumber(v, w);
+    else if (field == "point_angle")
+      t.pointAngle = asNumber(v, w);
+    else if (field == "flute_length")
+      t.fluteLength = asNumber(v, w);
+    else if (field == "nose_radius")
+      t.noseRadius = asNumber(v, w);
+    else if (field == "tip")
+      t.tip = static_cast<int>(asInteger(v, w));
     else if (field == "insert_angle") {
       t.insertAngle = asNumber(v, w);
-      if (!(t.insertAngle > 0 && t.insertAngle < 180)) bad(w, "insert_angle is between 0 and 180 degrees");
+      if (!(t.insertAngle > 0 && t.insertAngle < 180))
+        bad(w, "insert_angle is between 0 and 180 degrees");
     } else if (field == "edge_length") {
       t.edgeLength = asNumber(v, w);
       if (t.edgeLength < 0) bad(w, "must not be negative");
-    }
-    else if (field == "holder_diameter") t.holderDiameter = asNumber(v, w);
-    else if (field == "holder_length") t.holderLength = asNumber(v, w);
-    else bad(w, "tool fields: type diameter corner_radius length point_angle flute_length nose_radius tip insert_angle edge_length holder_diameter holder_length");
+    } else if (field == "holder_diameter")
+      t.holderDiameter = asNumber(v, w);
+    else if (field == "holder_length")
+      t.holderLength = asNumber(v, w);
+    else
+      bad(w,
+          "tool fields: type diameter corner_radius length point_angle flute_length nose_radius "
+          "tip insert_angle edge_length holder_diameter holder_length");
     return;
   }
   if (head == "timing") {
@@ -366,11 +419,16 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     return;
   }
   if (head == "probe") {
-    if (rest == "tool") s.probe.tool = static_cast<int>(asInteger(v, w));
-    else if (rest == "ball_diameter") s.probe.ballDiameter = asNumber(v, w);
-    else if (rest == "miss_alarm") s.probe.missAlarm = asBool(v, w);
-    else if (rest == "use_stock") s.probe.useStock = asBool(v, w);
-    else bad(w, "probe keys: tool ball_diameter miss_alarm use_stock");
+    if (rest == "tool")
+      s.probe.tool = static_cast<int>(asInteger(v, w));
+    else if (rest == "ball_diameter")
+      s.probe.ballDiameter = asNumber(v, w);
+    else if (rest == "miss_alarm")
+      s.probe.missAlarm = asBool(v, w);
+    else if (rest == "use_stock")
+      s.probe.useStock = asBool(v, w);
+    else
+      bad(w, "probe keys: tool ball_diameter miss_alarm use_stock");
     return;
   }
   if (head == "solids") {
@@ -384,7 +442,8 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     if (!so.line) so.line = line;
     auto vec = [&](size_t minSize) {
       const auto* arr = std::get_if<std::vector<double>>(&v);
-      if (!arr || arr->size() < minSize || arr->size() > 3) bad(w, "expected an array of 2 or 3 numbers");
+      if (!arr || arr->size() < minSize || arr->size() > 3)
+        bad(w, "expected an array of 2 or 3 numbers");
       return *arr;
     };
     if (field == "kind") {
@@ -394,17 +453,30 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
         bad(w, "solid kinds: box cylinder boss bore plane");
     } else if (field == "frame") {
       so.frame = asString(v, w);
-      if (so.frame != "machine" && workOffsetIndex(so.frame) < 0) bad(w, "frame is machine or a work offset (G54, ...)");
-    } else if (field == "center") so.center = vec(2);
-    else if (field == "min") so.min = vec(3);
-    else if (field == "max") so.max = vec(3);
-    else if (field == "point") so.point = vec(3);
-    else if (field == "normal") so.normal = vec(3);
-    else if (field == "diameter") so.diameter = asNumber(v, w);
-    else if (field == "outer_diameter") so.outerDiameter = asNumber(v, w);
-    else if (field == "top") so.top = asNumber(v, w);
-    else if (field == "bottom") so.bottom = asNumber(v, w);
-    else bad(w, "solid fields: kind frame center diameter outer_diameter top bottom min max point normal");
+      if (so.frame != "machine" && workOffsetIndex(so.frame) < 0)
+        bad(w, "frame is machine or a work offset (G54, ...)");
+    } else if (field == "center")
+      so.center = vec(2);
+    else if (field == "min")
+      so.min = vec(3);
+    else if (field == "max")
+      so.max = vec(3);
+    else if (field == "point")
+      so.point = vec(3);
+    else if (field == "normal")
+      so.normal = vec(3);
+    else if (field == "diameter")
+      so.diameter = asNumber(v, w);
+    else if (field == "outer_diameter")
+      so.outerDiameter = asNumber(v, w);
+    else if (field == "top")
+      so.top = asNumber(v, w);
+    else if (field == "bottom")
+      so.bottom = asNumber(v, w);
+    else
+      bad(w,
+          "solid fields: kind frame center diameter outer_diameter top bottom min max point "
+          "normal");
     return;
   }
   if (head == "stock") {
@@ -424,14 +496,23 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
       st.frame = asString(v, w);
       if (st.frame != "work" && st.frame != "machine" && st.frame != "program")
         bad(w, "frame is work, machine or program (sim/stock_frame.hpp)");
-    } else if (rest == "diameter") st.diameter = nonNegative(asNumber(v, w));
-    else if (rest == "bore_diameter") st.boreDiameter = nonNegative(asNumber(v, w));
-    else if (rest == "length") st.length = nonNegative(asNumber(v, w));
-    else if (rest == "front_z") st.frontZ = asNumber(v, w);
-    else if (rest == "min") st.min = box();
-    else if (rest == "max") st.max = box();
-    else if (rest == "cell") st.cell = nonNegative(asNumber(v, w));
-    else bad(w, "stock keys: frame diameter bore_diameter length front_z (lathe); min max cell (mill)");
+    } else if (rest == "diameter")
+      st.diameter = nonNegative(asNumber(v, w));
+    else if (rest == "bore_diameter")
+      st.boreDiameter = nonNegative(asNumber(v, w));
+    else if (rest == "length")
+      st.length = nonNegative(asNumber(v, w));
+    else if (rest == "front_z")
+      st.frontZ = asNumber(v, w);
+    else if (rest == "min")
+      st.min = box();
+    else if (rest == "max")
+      st.max = box();
+    else if (rest == "cell")
+      st.cell = nonNegative(asNumber(v, w));
+    else
+      bad(w,
+          "stock keys: frame diameter bore_diameter length front_z (lathe); min max cell (mill)");
     return;
   }
   if (head == "target") {
@@ -440,7 +521,8 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
     if (!tg.line) tg.line = line;
     if (rest == "blocks") {
       // "N60..N100" (or "60..100", or one block "N200")
-      std::string text = std::holds_alternative<double>(v) ? std::to_string(asInteger(v, w)) : asString(v, w);
+      std::string text =
+          std::holds_alternative<double>(v) ? std::to_string(asInteger(v, w)) : asString(v, w);
       auto number = [&](std::string part) {
         if (!part.empty() && (part[0] == 'N' || part[0] == 'n')) part = part.substr(1);
         int n = -1;
@@ -453,20 +535,27 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
       tg.fromN = number(text.substr(0, dots));
       tg.toN = dots == std::string::npos ? tg.fromN : number(text.substr(dots + 2));
       if (tg.toN < tg.fromN) bad(w, "the first N must not be above the last");
-    } else if (rest == "polyline") tg.polyline = asString(v, w);
+    } else if (rest == "polyline")
+      tg.polyline = asString(v, w);
     else if (rest == "shift") {
       const auto* arr = std::get_if<std::vector<double>>(&v);
       if (!arr || arr->size() != 2) bad(w, "expected [U, W] (U as a diameter)");
       tg.shift = {(*arr)[0], (*arr)[1]};
     } else if (rest == "reachable") {
       tg.reachable = asString(v, w);
-      if (tg.reachable != "sharp" && tg.reachable != "nose") bad(w, "expected \"sharp\" or \"nose\"");
-    } else if (rest == "face_z") tg.faceZ = asNumber(v, w);
-    else if (rest == "height_map") tg.heightMap = asString(v, w);
+      if (tg.reachable != "sharp" && tg.reachable != "nose")
+        bad(w, "expected \"sharp\" or \"nose\"");
+    } else if (rest == "face_z")
+      tg.faceZ = asNumber(v, w);
+    else if (rest == "height_map")
+      tg.heightMap = asString(v, w);
     else if (rest == "tolerance") {
       tg.tolerance = asNumber(v, w);
       if (!(tg.tolerance > 0)) bad(w, "must be positive");
-    } else bad(w, "target keys: blocks polyline shift reachable (lathe); face_z height_map (mill); tolerance");
+    } else
+      bad(w,
+          "target keys: blocks polyline shift reachable (lathe); face_z height_map (mill); "
+          "tolerance");
     return;
   }
   bad(w, "unknown key");
@@ -486,7 +575,8 @@ void walk(Setup& s, const toml::table& t, const std::string& prefix) {
     int col = static_cast<int>(at.column);
     if (auto* sub = node.as_table()) {
       walk(s, *sub, key);
-    } else if (auto* tables = node.as_array(); tables && !tables->empty() && tables->front().is_table()) {
+    } else if (auto* tables = node.as_array();
+               tables && !tables->empty() && tables->front().is_table()) {
       // [[solids]]: an array of tables, walked as solids.0, solids.1, ...
       for (size_t i = 0; i < tables->size(); ++i) {
         auto* entry = (*tables)[i].as_table();
@@ -496,8 +586,10 @@ void walk(Setup& s, const toml::table& t, const std::string& prefix) {
     } else if (auto* arr = node.as_array()) {
       std::vector<double> nums;
       for (const auto& e : *arr) {
-        if (auto d = e.value<double>()) nums.push_back(*d);
-        else throw SetupError(key + ": expected an array of numbers", key, line);
+        if (auto d = e.value<double>())
+          nums.push_back(*d);
+        else
+          throw SetupError(key + ": expected an array of numbers", key, line);
       }
       applyKey(s, key, nums, line, col);
     } else if (auto b = node.value<bool>(); node.is_boolean()) {
@@ -657,7 +749,8 @@ void applySetting(Setup& setup, const std::string& assignment) {
     size_t pos = 0;
     while (pos <= inner.size() && !inner.empty()) {
       size_t comma = inner.find(',', pos);
-      std::string item = inner.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+      std::string item =
+          inner.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
       double x = 0;
       size_t b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
       item = b == std::string::npos ? "" : item.substr(b, e - b + 1);
@@ -669,9 +762,12 @@ void applySetting(Setup& setup, const std::string& assignment) {
       pos = comma + 1;
     }
     v = nums;
-  } else if (text == "true" || text == "false") v = text == "true";
-  else if (r.ec == std::errc() && r.ptr == text.data() + text.size()) v = d;
-  else v = text;
+  } else if (text == "true" || text == "false")
+    v = text == "true";
+  else if (r.ec == std::errc() && r.ptr == text.data() + text.size())
+    v = d;
+  else
+    v = text;
   try {
     applyKey(setup, key, v, 0);
   } catch (const SetupError& e) {

@@ -25,10 +25,10 @@ struct AxisConfig {
   char name = 'X';
   bool present = false;
   bool rotary = false;
-  bool diameter = false;       // lathe X: programmed and shown as a diameter
-  double rapidRate = 24000.0;  // units/min (deg/min for rotary)
+  bool diameter = false;              // lathe X: programmed and shown as a diameter
+  double rapidRate = 24000.0;         // units/min (deg/min for rotary)
   std::array<double, 4> reference{};  // G28 / G30 P2..P4 positions, machine coordinates
-  double initial = 0.0;        // machine position at cycle start
+  double initial = 0.0;               // machine position at cycle start
   // Stored stroke limit 1 (machine coordinates); a move past it alarms before it starts.
   double min = -1e12, max = 1e12;
 };
@@ -48,8 +48,8 @@ struct ToolSpec {
 
 // Geometry the probe can touch (G31). Cylinders, bosses and bores have their axis along Z.
 struct SolidSpec {
-  std::string kind;              // box, cylinder (= boss), bore, plane
-  std::string frame = "machine"; // machine, or a work offset name (EXT, G54.., G54.1 P1..)
+  std::string kind;               // box, cylinder (= boss), bore, plane
+  std::string frame = "machine";  // machine, or a work offset name (EXT, G54.., G54.1 P1..)
   std::vector<double> center, min, max, point, normal;  // X Y (Z) in the frame
   double diameter = 0, outerDiameter = 0;
   double top = 0, bottom = -1e9;
@@ -107,9 +107,9 @@ struct Limits {
   uint32_t maxLineLength = 4096;
   uint64_t maxFileBytes = 512ull << 20;
   uint64_t maxTraceBytes = 1ull << 30;  // 1 GiB: a runaway trace stops before it fills a disk
-  int macroNesting = 5;       // G65/G66/code-call levels (locals #1-#33 levels 1..n)
-  int subprogramNesting = 10; // M98 levels
-  int totalNesting = 15;      // both together
+  int macroNesting = 5;                 // G65/G66/code-call levels (locals #1-#33 levels 1..n)
+  int subprogramNesting = 10;           // M98 levels
+  int totalNesting = 15;                // both together
 };
 
 // The machine's interface signals as the macro reads them (#1000-#1031 one input each, #1032
@@ -169,13 +169,13 @@ struct Setup {
   double param(const std::string& key, double fallback) const;
   bool bit(const std::string& key) const { return param(key, 0) != 0; }
   // Common parameter views.
-  bool dpi() const { return bit("3401#0"); }   // calculator-type decimal input
-  bool nat() const { return bit("6004#0"); }   // ASIN/ATAN range -90..90 / -180..180
-  bool lrp() const { return bit("1401#1"); }   // linear (not dog-leg) rapids
-  bool prt() const { return bit("6001#1"); }   // DPRNT: no leading blanks
-  bool tcs() const { return bit("6001#5"); }   // T code calls O9000
-  int macroDigits() const;  // significant digits of macro values, 0 = double precision
-  double arcTolerance() const;                  // parameter 3410, in mm
+  bool dpi() const { return bit("3401#0"); }  // calculator-type decimal input
+  bool nat() const { return bit("6004#0"); }  // ASIN/ATAN range -90..90 / -180..180
+  bool lrp() const { return bit("1401#1"); }  // linear (not dog-leg) rapids
+  bool prt() const { return bit("6001#1"); }  // DPRNT: no leading blanks
+  bool tcs() const { return bit("6001#5"); }  // T code calls O9000
+  int macroDigits() const;      // significant digits of macro values, 0 = double precision
+  double arcTolerance() const;  // parameter 3410, in mm
   // Program number called by G code g through 6050-6059 (O9010-O9019), or -1.
   int gCodeCall(int g) const;
   int mCodeMacroCall(int m) const;  // 6080-6089 -> O9020-O9029

@@ -29,30 +29,32 @@ enum class Side { Off, Left, Right };  // G40, G41, G42
 struct InSeg {
   Kind kind = Kind::Line;
   P2 start, end;
-  P2 center;           // arcs
-  bool rapid = false;  // G00 (start-up and cancel blocks may be G00 or G01)
-  Side side = Side::Off;  // G40/G41/G42 in effect for this block
-  double radius = 0;      // D value in effect (program units; negative swaps sides)
-  int tag = -1;           // caller's id for the block (returned on the output)
-  bool cornerArc = false; // G39 in this block (a corner arc at its start)
+  P2 center;               // arcs
+  bool rapid = false;      // G00 (start-up and cancel blocks may be G00 or G01)
+  Side side = Side::Off;   // G40/G41/G42 in effect for this block
+  double radius = 0;       // D value in effect (program units; negative swaps sides)
+  int tag = -1;            // caller's id for the block (returned on the output)
+  bool cornerArc = false;  // G39 in this block (a corner arc at its start)
   // G39 I J (K): the corner arc ends perpendicular to this direction instead of to the
   // block's start (16/18-C manual: the new vector is at right angles to (I, J)).
-  bool cornerHasDir = false; P2 cornerDir;
-  bool hasIJK = false; P2 ijk;  // G40 with I/J/K: the direction the cancel vector points
+  bool cornerHasDir = false;
+  P2 cornerDir;
+  bool hasIJK = false;
+  P2 ijk;  // G40 with I/J/K: the direction the cancel vector points
 };
 
 struct OutSeg {
   Kind kind = Kind::Line;
   P2 start, end, center;
   bool rapid = false;
-  int tag = -1;         // the programmed block this piece belongs to
-  bool inserted = false;  // an extra corner move the control adds (outer acute corners)
+  int tag = -1;             // the programmed block this piece belongs to
+  bool inserted = false;    // an extra corner move the control adds (outer acute corners)
   bool vectorAtEnd = true;  // false: the piece ends on the programmed point (no vector)
 };
 
 struct Options {
-  bool startupTypeB = false;     // parameter 5003#0 SUP: 0 = type A, 1 = type B
-  int lookahead = 3;             // blocks the control reads ahead (16i: 3)
+  bool startupTypeB = false;  // parameter 5003#0 SUP: 0 = type A, 1 = type B
+  int lookahead = 3;          // blocks the control reads ahead (16i: 3)
   double epsilon = 1e-9;
 };
 

@@ -27,7 +27,7 @@ enum class SegKind { Rapid, Line, ArcCw, ArcCcw };
 struct ContourSeg {
   SegKind kind = SegKind::Line;
   Pt end;
-  Pt center;         // arcs only
+  Pt center;            // arcs only
   int blockIndex = -1;  // program block that produced it (for the trace)
   int comp = -1;        // G40/G41/G42 (x10) in effect for the block; -1: as the block before
 };
@@ -35,13 +35,13 @@ struct ContourSeg {
 struct Contour {
   Pt start;  // the cycle start point A (where the tool is when the cycle is commanded)
   std::vector<ContourSeg> segs;  // ns..nf in order; segs[0] is the ns block
-  bool nsNamesZ = false;  // the ns block names Z/W too: G71 type II (G72: names X/U)
+  bool nsNamesZ = false;         // the ns block names Z/W too: G71 type II (G72: names X/U)
 };
 
 struct Move {
   SegKind kind = SegKind::Line;
   Pt end;
-  Pt center;            // arcs only
+  Pt center;              // arcs only
   int contourIndex = -1;  // index into Contour::segs when the move follows a contour block
   bool thread = false;    // synchronised threading feed (G92/G76/G32)
   // Tool-nose radius compensation (G70, G90, G94 under G41/G42): the move ends on the

@@ -13,8 +13,12 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 // overshoot it allows is r * (1 - cos(1e-6 * 2pi)), a few 1e-11 of the radius.
 constexpr double kAngleTol = 1e-6;
 
-double angleOf(const Pt& p, const Pt& c) { return std::atan2(p.x - c.x, p.z - c.z); }
-double radiusOf(const Pt& p, const Pt& c) { return std::hypot(p.x - c.x, p.z - c.z); }
+double angleOf(const Pt& p, const Pt& c) {
+  return std::atan2(p.x - c.x, p.z - c.z);
+}
+double radiusOf(const Pt& p, const Pt& c) {
+  return std::hypot(p.x - c.x, p.z - c.z);
+}
 
 // Local parameter (0..1 over the sweep) at which an arc reaches angle phi, or -1.
 double paramOfAngle(const Piece& p, double phi) {
@@ -68,13 +72,17 @@ double extremeU(const Piece& p, double t0, double t1, double sgn) {
 
 }  // namespace
 
-bool isArc(SegKind k) { return k == SegKind::ArcCw || k == SegKind::ArcCcw; }
+bool isArc(SegKind k) {
+  return k == SegKind::ArcCw || k == SegKind::ArcCcw;
+}
 
 bool near(const Pt& a, const Pt& b) {
   return std::abs(a.x - b.x) <= kEps && std::abs(a.z - b.z) <= kEps;
 }
 
-double sign(double v) { return v > kEps ? 1.0 : v < -kEps ? -1.0 : 0.0; }
+double sign(double v) {
+  return v > kEps ? 1.0 : v < -kEps ? -1.0 : 0.0;
+}
 
 Pt Frame::to(const Pt& p) const {
   double depth = swap ? p.z : p.x;

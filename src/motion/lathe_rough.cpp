@@ -35,8 +35,12 @@ using detail::Piece;
 // otherwise build millions of moves from one block.
 constexpr int kMaxLevels = 100000;
 
-double depthOf(const Pt& p, bool facing) { return facing ? p.z : p.x; }
-double passOf(const Pt& p, bool facing) { return facing ? p.x : p.z; }
+double depthOf(const Pt& p, bool facing) {
+  return facing ? p.z : p.x;
+}
+double passOf(const Pt& p, bool facing) {
+  return facing ? p.x : p.z;
+}
 
 // The frame's orientation comes from the geometry, as on the control: the infeed runs
 // from A towards A' (the ns block); the passes run from the ns point towards the contour's
@@ -97,8 +101,8 @@ void checkMonotonic(const Path& path, size_t first, bool typeTwo, double increme
 // Plans the passes of one G71/G72 cycle in the frame.
 class Rougher {
  public:
-  Rougher(Path path, size_t contourFirst, Pt home, Pt nsPoint, const RoughParams& p,
-          bool typeTwo, SegKind infeed)
+  Rougher(Path path, size_t contourFirst, Pt home, Pt nsPoint, const RoughParams& p, bool typeTwo,
+          SegKind infeed)
       : path_(std::move(path)),
         first_(contourFirst),
         home_(home),
@@ -143,8 +147,8 @@ class Rougher {
 
   // Rapid over everything between path positions sa and sb, then down to `to`.
   void travel(const Pt& to, double sa, double sb) {
-    double clear = std::max({pos_.x, to.x, detail::maxU(path_, std::min(sa, sb),
-                                                         std::max(sa, sb)) + e_});
+    double clear =
+        std::max({pos_.x, to.x, detail::maxU(path_, std::min(sa, sb), std::max(sa, sb)) + e_});
     go(SegKind::Rapid, {clear, pos_.z});
     go(SegKind::Rapid, {clear, to.z});
     go(SegKind::Rapid, to);
@@ -215,8 +219,8 @@ class Rougher {
   void finalPass() {
     go(infeed_, ns_);
     size_t from = out_.size();
-    detail::appendPath(path_, static_cast<double>(first_), static_cast<double>(path_.size()),
-                       true, out_);
+    detail::appendPath(path_, static_cast<double>(first_), static_cast<double>(path_.size()), true,
+                       out_);
     if (out_.size() > from) pos_ = out_.back().end;
     go(SegKind::Rapid, home_);
   }

@@ -14,15 +14,24 @@ struct TipSigns {
 
 constexpr TipSigns tipSigns(int tip) {
   switch (tip) {
-    case 1: return {1, 1};
-    case 2: return {1, -1};
-    case 3: return {-1, -1};
-    case 4: return {-1, 1};
-    case 5: return {0, 1};
-    case 6: return {1, 0};
-    case 7: return {0, -1};
-    case 8: return {-1, 0};
-    default: return {0, 0};
+    case 1:
+      return {1, 1};
+    case 2:
+      return {1, -1};
+    case 3:
+      return {-1, -1};
+    case 4:
+      return {-1, 1};
+    case 5:
+      return {0, 1};
+    case 6:
+      return {1, 0};
+    case 7:
+      return {0, -1};
+    case 8:
+      return {-1, 0};
+    default:
+      return {0, 0};
   }
 }
 

@@ -312,7 +312,7 @@ char* TraceWriter::lineNumber(char* p, uint32_t line) {
 // The axis array ("[1.5,2,-3]"), its text taken from `reuse` when that holds the same
 // values, and remembered in `save` for the next use.
 inline char* TraceWriter::putAxesCached(char* p, const AxisArray& a, int n, const AxesText* reuse,
-                                 AxesText* save) {
+                                        AxesText* save) {
   char* const base = buf_.get();
   if (reuse && reuse->len && sameValues(reuse->v, a, n)) {
     copyText(p, base + reuse->at, reuse->len);

@@ -11,8 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "server/guarded_http.hpp"
 #include "core/version.hpp"
+#include "server/guarded_http.hpp"
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
 #include "server/viewer_stream.hpp"
@@ -241,7 +241,8 @@ WebServer::WebServer(ServerConfig config)
                        "busy: " + std::to_string(config_.threads) + " runs in progress; try again");
     res.status = 200;
     res.set_chunked_content_provider(
-        "application/octet-stream", [this, job](size_t, httplib::DataSink& sink) {
+        "application/octet-stream",
+        [this, job](size_t, httplib::DataSink& sink) {
           FrameSplitter frames;
           bool ended = false, open = true;
           WorkerLimits limits = config_.worker;

@@ -1,7 +1,5 @@
 #include "sim/lathe_stock.hpp"
 
-#include "sim/lathe_probe.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +8,8 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+
+#include "sim/lathe_probe.hpp"
 
 namespace ncvm {
 

@@ -84,7 +84,7 @@ class LatheStock final : public StockModel {
   const Setup& setup_;
   StockFrame frame_;
   MoveEvent placed_;  // scratch: a move shifted into the stock frame
-  double unit_ = 1;  // 1 mm in program units (1/25.4 in an inch setup)
+  double unit_ = 1;   // 1 mm in program units (1/25.4 in an inch setup)
   double tol_ = 0.01, chord_ = 0.0005;
   double rIn_ = 0, rOut_ = 0, zFront_ = 0, zBack_ = 0;
   double tileWidth_ = 1;
@@ -108,7 +108,7 @@ class LatheStock final : public StockModel {
   nlohmann::json tools_ = nlohmann::json::array();
   std::vector<std::string> notes_;
   bool toolKnown_ = false;
-  bool cuts_ = true;  // false while a probe is in the turret
+  bool cuts_ = true;        // false while a probe is in the turret
   double probeRadius_ = 0;  // the probe's ball radius while !cuts_ (0: a point)
   // Nose radii for reachable = "nose": the tool's as the target blocks ran (-1: not yet), and
   // the largest of the cutting tools (for a polyline target).

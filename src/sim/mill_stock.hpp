@@ -51,8 +51,8 @@ class MillStock final : public StockModel {
   std::map<int, MillTool> tools_;  // cutting tools of [tools], by T
   std::optional<HeightField> targetField_;
   std::optional<MillTarget> target_;
-  int selected_ = -1;  // last T word
-  int current_ = -1;   // tool in the spindle
+  int selected_ = -1;       // last T word
+  int current_ = -1;        // tool in the spindle
   double probeRadius_ = 0;  // > 0 while a probe is in the spindle (its ball radius)
   struct ProbeHit {
     uint32_t tag;

@@ -10,8 +10,12 @@ namespace ncvm {
 
 namespace {
 
-double len(double x, double y) { return std::sqrt(x * x + y * y); }
-double len(double x, double y, double z) { return std::sqrt(x * x + y * y + z * z); }
+double len(double x, double y) {
+  return std::sqrt(x * x + y * y);
+}
+double len(double x, double y, double z) {
+  return std::sqrt(x * x + y * y + z * z);
+}
 
 // Exact signed distances (negative inside the material).
 double boxDistance(const SolidWorld::Solid& s, const Vec3& p) {
@@ -36,7 +40,7 @@ double cylinderDistance(const SolidWorld::Solid& s, const Vec3& p) {
 // (a ring) or without end.
 double boreDistance(const SolidWorld::Solid& s, const Vec3& p) {
   double r = len(p[0] - s.a[0], p[1] - s.a[1]);
-  double inHole = s.radius - r;             // > 0 inside the hole
+  double inHole = s.radius - r;  // > 0 inside the hole
   double beyond = s.outer > 0 ? r - s.outer : -std::numeric_limits<double>::infinity();
   double dz = std::max(s.bottom - p[2], p[2] - s.top);
   // The material is {radius <= r <= outer} x {bottom <= z <= top}: an annulus extruded.
@@ -54,10 +58,18 @@ double SolidWorld::distance(const Vec3& p) const {
   double d = std::numeric_limits<double>::infinity();
   for (const Solid& s : solids_) {
     switch (s.kind) {
-      case Solid::Box: d = std::min(d, boxDistance(s, p)); break;
-      case Solid::Cylinder: d = std::min(d, cylinderDistance(s, p)); break;
-      case Solid::Bore: d = std::min(d, boreDistance(s, p)); break;
-      case Solid::Plane: d = std::min(d, planeDistance(s, p)); break;
+      case Solid::Box:
+        d = std::min(d, boxDistance(s, p));
+        break;
+      case Solid::Cylinder:
+        d = std::min(d, cylinderDistance(s, p));
+        break;
+      case Solid::Bore:
+        d = std::min(d, boreDistance(s, p));
+        break;
+      case Solid::Plane:
+        d = std::min(d, planeDistance(s, p));
+        break;
     }
   }
   return d;
@@ -92,13 +104,17 @@ std::optional<double> SolidWorld::firstContact(const Vec3& a, const Vec3& b, dou
   return hi;
 }
 
-std::unique_ptr<SolidWorld> SolidWorld::fromSetup(const Setup& setup, const std::function<Vec3(int)>& workShift) {
+std::unique_ptr<SolidWorld> SolidWorld::fromSetup(const Setup& setup,
+                                                  const std::function<Vec3(int)>& workShift) {
   auto world = std::make_unique<SolidWorld>();
   for (size_t k = 0; k < setup.solids.size(); ++k) {
     const SolidSpec& sp = setup.solids[k];
     std::string key = fmt::format("solids.{}", k);
     auto need = [&](bool ok, const char* what) {
-      if (!ok) throw SetupError(fmt::format("{}: a {} needs {}", key, sp.kind.empty() ? "solid" : sp.kind, what), key, sp.line);
+      if (!ok)
+        throw SetupError(
+            fmt::format("{}: a {} needs {}", key, sp.kind.empty() ? "solid" : sp.kind, what), key,
+            sp.line);
     };
     need(!sp.kind.empty(), "kind");
     Vec3 shift{};

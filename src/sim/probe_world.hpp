@@ -27,8 +27,8 @@ class SolidWorld final : public ProbeWorld {
  public:
   struct Solid {
     enum Kind { Box, Cylinder, Bore, Plane } kind;
-    Vec3 a{}, b{};             // box min/max; cylinder/bore centre (x, y); plane point
-    Vec3 n{};                  // plane normal (material on the -n side)
+    Vec3 a{}, b{};  // box min/max; cylinder/bore centre (x, y); plane point
+    Vec3 n{};       // plane normal (material on the -n side)
     double radius = 0, outer = 0, top = 0, bottom = 0;
   };
   // Work-frame solids are placed with `workShift(frameIndex)` (mm per axis X Y Z), the

@@ -73,18 +73,17 @@ inline uint64_t modeBitsOf(const MoveEvent& e) {
 struct History {
   uint64_t fileLine = uint64_t{1} << 32;  // file | line << 32 the next move would have
   const std::string* programName = nullptr;
-  uint64_t feed = 0;             // bits
-  uint64_t modeBits = ~uint64_t{0};  // none yet: no move has them, the first record sends them
-  uint64_t header = 0;               // a record with no flags (set by the first record)
-  alignas(16) double end[kMaxAxes] = {};   // the previous move's end
+  uint64_t feed = 0;                      // bits
+  uint64_t modeBits = ~uint64_t{0};       // none yet: no move has them, the first record sends them
+  uint64_t header = 0;                    // a record with no flags (set by the first record)
+  alignas(16) double end[kMaxAxes] = {};  // the previous move's end
   alignas(16) double mend[kMaxAxes] = {};  // and mend
 };
 
 // Any record: what differs from the moves before is sent (for the usual move the same
 // record as encodeUsual's).
 template <size_t N>
-[[gnu::noinline]] uint64_t encodeAny(const MoveEvent& e, uint64_t* w, History& h,
-                                     uint64_t kind) {
+[[gnu::noinline]] uint64_t encodeAny(const MoveEvent& e, uint64_t* w, History& h, uint64_t kind) {
   uint64_t* p = w + 1;
   uint64_t f = 0;
   const uint64_t modeBits = modeBitsOf(e);
@@ -154,11 +153,11 @@ template <size_t N>
 inline uint64_t encodeUsual(const MoveEvent& e, uint64_t* w, History& h) {
   constexpr size_t L = kLanes<N>;
   const uint64_t fileLine = fileLineOf(e.at);
-  uint64_t diff = (fileLine ^ h.fileLine) |
-                  (std::bit_cast<uintptr_t>(e.at.programName) ^
-                   std::bit_cast<uintptr_t>(h.programName)) |
-                  (bitsOf(e.feed) ^ h.feed) | bitsOf(e.perRev) | bitsOf(e.surfaceSpeed) |
-                  bitsOf(e.rpmLimit) | (modeBitsOf(e) ^ h.modeBits) | uint64_t{e.arc};
+  uint64_t diff =
+      (fileLine ^ h.fileLine) |
+      (std::bit_cast<uintptr_t>(e.at.programName) ^ std::bit_cast<uintptr_t>(h.programName)) |
+      (bitsOf(e.feed) ^ h.feed) | bitsOf(e.perRev) | bitsOf(e.surfaceSpeed) | bitsOf(e.rpmLimit) |
+      (modeBitsOf(e) ^ h.modeBits) | uint64_t{e.arc};
   for (size_t k = 0; k < L; ++k)
     diff |= (bitsOf(e.start[k]) ^ bitsOf(h.end[k])) | (bitsOf(e.mstart[k]) ^ bitsOf(h.mend[k]));
   if (diff != 0) [[unlikely]]  // also the first move: no modes are remembered yet
@@ -193,7 +192,8 @@ inline void decode(const uint64_t* w, MoveEvent& e) {
   if (f & fMode) [[unlikely]] {
     const uint64_t m = *p++;
     e.mode = static_cast<MoveMode>(m & 0xff);
-    const auto stopInch = static_cast<uint16_t>(m >> 8), threadSkip = static_cast<uint16_t>(m >> 24);
+    const auto stopInch = static_cast<uint16_t>(m >> 8),
+               threadSkip = static_cast<uint16_t>(m >> 24);
     std::memcpy(&e.exactStop, &stopInch, 2);
     std::memcpy(&e.thread, &threadSkip, 2);
   }

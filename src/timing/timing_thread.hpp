@@ -126,9 +126,9 @@ class TimingThread final : public EventSink {
   uint64_t* reserveSlow(uint64_t words);  // the stream's end, or full
   void written(uint64_t words);           // the record reserve() returned is complete
   void queueCompact(const MoveEvent& e);
-  void publishMoves();  // a batch of compact records is complete
+  void publishMoves();                  // a batch of compact records is complete
   void onMoveSlow(const MoveEvent& e);  // every move but the usual compact one
-  Record& claim();  // the next free slot (waits while the side ring is full)
+  Record& claim();                      // the next free slot (waits while the side ring is full)
   // An event without texts of its own: copied whole into its slot of the record, or (when
   // admit says so) handed straight to the stage.
   template <class E>
@@ -183,16 +183,16 @@ class TimingThread final : public EventSink {
   // every move, and the worker reads the fields above (stage_, six_) at every record, so
   // sharing a line would move it between the cores once a move.
   alignas(64) uint64_t tail_ = 0;  // stream words written
-  uint64_t roomEnd_ = 0;         // a record fits when it ends here at most (reserveSlow)
-  uint64_t publishedLocal_ = 0;  // the last tail_ published
-  uint64_t headSeen_ = 0;        // the worker's head as last read
-  uint64_t slotTail_ = 0;        // slots written
-  uint64_t slotPublished_ = 0;   // slotTail_ when tail_ was last published
-  uint64_t slotHeadSeen_ = 0;    // the worker's slot head as last read
-  uint64_t bound_ = 0;           // the bound of the event being sent
-  uint64_t boundSum_ = 0;        // sum of the bounds of the events written
-  uint64_t allowedSeen_ = 0;     // allowed_ as last read
-  movecodec::History sent_;      // what the compact records so far said
+  uint64_t roomEnd_ = 0;           // a record fits when it ends here at most (reserveSlow)
+  uint64_t publishedLocal_ = 0;    // the last tail_ published
+  uint64_t headSeen_ = 0;          // the worker's head as last read
+  uint64_t slotTail_ = 0;          // slots written
+  uint64_t slotPublished_ = 0;     // slotTail_ when tail_ was last published
+  uint64_t slotHeadSeen_ = 0;      // the worker's slot head as last read
+  uint64_t bound_ = 0;             // the bound of the event being sent
+  uint64_t boundSum_ = 0;          // sum of the bounds of the events written
+  uint64_t allowedSeen_ = 0;       // allowed_ as last read
+  movecodec::History sent_;        // what the compact records so far said
 
   // Shared; each group on its own cache line, written by one side only.
   alignas(64) std::atomic<uint64_t> published_{0};  // producer: stream words the worker may take

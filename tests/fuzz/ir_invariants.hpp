@@ -30,7 +30,8 @@ inline void checkProgram(const Program& p) {
   if (!p.loopParents.empty() && p.loopParents.size() != nb) violated("loop parents size", 0);
   for (size_t k = 0; k < nb; ++k) {
     const Block& b = p.blocks[k];
-    if (b.ops >= 0 && static_cast<size_t>(b.ops) >= p.macroOps.size()) violated("macro operands", k);
+    if (b.ops >= 0 && static_cast<size_t>(b.ops) >= p.macroOps.size())
+      violated("macro operands", k);
     const MacroOps& o = p.ops(b);
     if (static_cast<size_t>(b.firstWord) + b.nWords > p.words.size()) violated("word range", k);
     for (uint32_t w = 0; w < b.nWords; ++w) {

@@ -1,13 +1,13 @@
 // The shared arc arithmetic (exec/arc_math.hpp): the sweep in (0, 2π] in both directions, the
 // full circle, the half circle whichever sign the zero cross product has, and agreement with
 // the difference of two angles that it replaced.
+#include "exec/arc_math.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
-
-#include "exec/arc_math.hpp"
 
 using ncvm::arcSweep;
 using ncvm::planeDistance;
@@ -28,12 +28,12 @@ double sweepByAngles(double su, double sv, double eu, double ev, double cu, doub
 
 TEST(ArcMath, QuarterHalfAndFullCircles) {
   // Centre at the origin, start on +X.
-  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, 0, 1e6, 0, 0, false), kPi / 2);      // G03 quarter
-  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, 0, 1e6, 0, 0, true), 3 * kPi / 2);   // G02 the long way
-  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, 0, -1e6, 0, 0, true), kPi / 2);      // G02 quarter
-  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, -1e6, 0, 0, 0, false), kPi);         // half, cross = +0
+  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, 0, 1e6, 0, 0, false), kPi / 2);     // G03 quarter
+  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, 0, 1e6, 0, 0, true), 3 * kPi / 2);  // G02 the long way
+  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, 0, -1e6, 0, 0, true), kPi / 2);     // G02 quarter
+  EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, -1e6, 0, 0, 0, false), kPi);        // half, cross = +0
   EXPECT_DOUBLE_EQ(arcSweep(1e6, 0, -1e6, 0, 0, 0, true), kPi);
-  EXPECT_DOUBLE_EQ(arcSweep(0, -1e6, 0, 1e6, 0, 0, false), kPi);         // half, cross = -0
+  EXPECT_DOUBLE_EQ(arcSweep(0, -1e6, 0, 1e6, 0, 0, false), kPi);  // half, cross = -0
   EXPECT_DOUBLE_EQ(arcSweep(0, -1e6, 0, 1e6, 0, 0, true), kPi);
   EXPECT_DOUBLE_EQ(arcSweep(5e5, 7e5, 5e5, 7e5, 1e5, 2e5, false), 2 * kPi);  // full circle
   EXPECT_DOUBLE_EQ(arcSweep(5e5, 7e5, 5e5, 7e5, 1e5, 2e5, true), 2 * kPi);

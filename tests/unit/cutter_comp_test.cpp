@@ -590,9 +590,9 @@ TEST(CrcFaceMilling, Seed002PassesComeInPairs) {
     passY.push_back(r.segs[i].end.v);
   }
   EXPECT_NEAR(r.segs[1].end.v, passY[0], kTol);  // N070 and N090: Y 25, 25
-  EXPECT_NEAR(passY[1], passY[2], kTol);          // N110 and N130: Y -75, -75
-  EXPECT_NEAR(passY[3], passY[4], kTol);          // N150 and N170: Y -175, -175
-  EXPECT_NEAR(passY[0] - passY[1], 100, kTol);  // a 2*25 band between 0 and -50 stays uncut
+  EXPECT_NEAR(passY[1], passY[2], kTol);         // N110 and N130: Y -75, -75
+  EXPECT_NEAR(passY[3], passY[4], kTol);         // N150 and N170: Y -175, -175
+  EXPECT_NEAR(passY[0] - passY[1], 100, kTol);   // a 2*25 band between 0 and -50 stays uncut
 }
 
 // suspend() (lathe cycles start from their programmed start point): the held start-up block

@@ -1,5 +1,7 @@
 // Lathe canned cycles (src/motion/lathe_cycles.hpp). Expected paths are worked out by hand
 // in the comments; x is a radius throughout.
+#include "motion/lathe_cycles.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,8 +13,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include "motion/lathe_cycles.hpp"
 
 using namespace ncvm;
 using namespace ncvm::lathe;
@@ -39,10 +39,14 @@ Contour contour(Pt start, std::vector<ContourSeg> segs, bool typeTwo = false) {
 
 const char* kindName(SegKind k) {
   switch (k) {
-    case SegKind::Rapid: return "G00";
-    case SegKind::Line: return "G01";
-    case SegKind::ArcCw: return "G02";
-    case SegKind::ArcCcw: return "G03";
+    case SegKind::Rapid:
+      return "G00";
+    case SegKind::Line:
+      return "G01";
+    case SegKind::ArcCw:
+      return "G02";
+    case SegKind::ArcCcw:
+      return "G03";
   }
   return "?";
 }
@@ -83,7 +87,9 @@ void expectAlarm(const std::function<void()>& f, AlarmId id) {
   }
 }
 
-bool isArc(const Move& m) { return m.kind == SegKind::ArcCw || m.kind == SegKind::ArcCcw; }
+bool isArc(const Move& m) {
+  return m.kind == SegKind::ArcCw || m.kind == SegKind::ArcCcw;
+}
 
 // Signed sweep of an arc move from `from` (CCW positive, seen with Z across and X up).
 double sweepOf(const Pt& from, const Move& m) {
@@ -130,7 +136,8 @@ std::vector<double> xsAtZ(const Pt& from, const Move& m, double z) {
   double a0 = std::atan2(from.x - m.center.x, from.z - m.center.z);
   double sweep = sweepOf(from, m);
   for (double x : {m.center.x + h, m.center.x - h}) {
-    double d = sweep > 0 ? std::atan2(x - m.center.x, dz) - a0 : a0 - std::atan2(x - m.center.x, dz);
+    double d =
+        sweep > 0 ? std::atan2(x - m.center.x, dz) - a0 : a0 - std::atan2(x - m.center.x, dz);
     d = std::fmod(d + 4 * std::numbers::pi, 2 * std::numbers::pi);
     if (d <= std::abs(sweep) + 1e-12 || d >= 2 * std::numbers::pi - 1e-12) xs.push_back(x);
   }
@@ -221,9 +228,10 @@ TEST(LatheG71, SteppedOdPassesSemiFinishAndReturn) {
 
 TEST(LatheG71, RoughedEnvelopeIsTheShapeShiftedByTheAllowance) {
   std::vector<Move> moves = roughTurning(steppedOd(), {2, 0.5, 0.25, 0.1});
-  std::vector<Pt> shifted = {{10.25, 2.1}, {10.25, -19.9}, {15.25, -19.9}, {15.25, -39.9},
-                             {25.25, -39.9}};
-  expectEnvelope({25, 2}, moves, [&](double z) { return shapeX(shifted, z); }, 2.0, -39.85);
+  std::vector<Pt> shifted = {
+      {10.25, 2.1}, {10.25, -19.9}, {15.25, -19.9}, {15.25, -39.9}, {25.25, -39.9}};
+  expectEnvelope(
+      {25, 2}, moves, [&](double z) { return shapeX(shifted, z); }, 2.0, -39.85);
 }
 
 // Depth 2.5 without allowance puts level 15 exactly on the second diameter: the pass stops
@@ -266,8 +274,8 @@ TEST(LatheG71, TaperPassesEndOnTheTaper) {
                                 seg(SegKind::Line, 16, -20), seg(SegKind::Line, 20, -20)});
   std::vector<Move> moves = roughTurning(c, {3, 0.5, 0.2, 0.1});
   std::vector<Want> want;
-  for (auto [level, zEnd] : std::vector<std::pair<double, double>>{
-           {17, -19.9}, {14, -17.7}, {11, -14.7}, {8, -11.7}}) {
+  for (auto [level, zEnd] :
+       std::vector<std::pair<double, double>>{{17, -19.9}, {14, -17.7}, {11, -14.7}, {8, -11.7}}) {
     want.push_back({SegKind::Rapid, level, 2});
     want.push_back({SegKind::Line, level, zEnd});
     want.push_back({SegKind::Line, level + 0.5, zEnd + 0.5});
@@ -280,7 +288,8 @@ TEST(LatheG71, TaperPassesEndOnTheTaper) {
   want.push_back({SegKind::Rapid, 20, 2});
   expectMoves(moves, want);
   std::vector<Pt> shifted = {{6.2, 2.1}, {6.2, -9.9}, {16.2, -19.9}, {20.2, -19.9}};
-  expectEnvelope({20, 2}, moves, [&](double z) { return shapeX(shifted, z); }, 2, -19.8);
+  expectEnvelope(
+      {20, 2}, moves, [&](double z) { return shapeX(shifted, z); }, 2, -19.8);
 }
 
 // A ball end: X0 Z0, G03 to X20 Z-10 R10 (centre X0 Z-10), X20 to Z-20, face to X40.
@@ -288,8 +297,8 @@ TEST(LatheG71, TaperPassesEndOnTheTaper) {
 // (L - 0.2)^2 + (z + 9.9)^2 = 100. Levels 17, 14, 11 end on the face (Z-19.9).
 TEST(LatheG71, ArcInShapeStopsPassesOnTheCircle) {
   Contour c = contour({20, 2}, {seg(SegKind::Rapid, 0, 2), seg(SegKind::Line, 0, 0),
-                                seg(SegKind::ArcCcw, 10, -10, 0, -10),
-                                seg(SegKind::Line, 10, -20), seg(SegKind::Line, 20, -20)});
+                                seg(SegKind::ArcCcw, 10, -10, 0, -10), seg(SegKind::Line, 10, -20),
+                                seg(SegKind::Line, 20, -20)});
   std::vector<Move> moves = roughTurning(c, {3, 0.5, 0.2, 0.1});
   std::vector<Want> want;
   for (double level : {17.0, 14.0, 11.0, 8.0, 5.0, 2.0}) {
@@ -322,9 +331,9 @@ TEST(LatheG71, ArcInShapeStopsPassesOnTheCircle) {
 // 19.8: 7..13 end on the bottom face (Z-29.9), 15..19 on the first face (Z-9.9); the
 // retract moves towards the axis.
 TEST(LatheG71, InsideDiameterStepsTowardsLargerX) {
-  Contour c = contour({5, 2}, {seg(SegKind::Rapid, 20, 2), seg(SegKind::Line, 20, -10),
-                               seg(SegKind::Line, 15, -10), seg(SegKind::Line, 15, -30),
-                               seg(SegKind::Line, 5, -30)});
+  Contour c = contour(
+      {5, 2}, {seg(SegKind::Rapid, 20, 2), seg(SegKind::Line, 20, -10), seg(SegKind::Line, 15, -10),
+               seg(SegKind::Line, 15, -30), seg(SegKind::Line, 5, -30)});
   std::vector<Move> moves = roughTurning(c, {2, 0.5, -0.2, 0.1});
   std::vector<Want> want;
   for (double level : {7.0, 9.0, 11.0, 13.0, 15.0, 17.0, 19.0}) {
@@ -350,12 +359,12 @@ TEST(LatheG71, InsideDiameterStepsTowardsLargerX) {
 // the groove (the lands are at exactly 10); level 8 enters the groove down its wall from
 // level 10 (X10 Z-10 to X8 Z-12), cuts to Z-20 and follows the wall up to level 10.
 TEST(LatheG71TypeII, PocketIsRoughedAndFollowedUp) {
-  Contour c = contour({20, 2},
-                      {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10),
-                       seg(SegKind::Line, 6, -14), seg(SegKind::Line, 6, -18),
-                       seg(SegKind::Line, 10, -22), seg(SegKind::Line, 10, -30),
-                       seg(SegKind::Line, 20, -30)},
-                      true);
+  Contour c =
+      contour({20, 2},
+              {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10), seg(SegKind::Line, 6, -14),
+               seg(SegKind::Line, 6, -18), seg(SegKind::Line, 10, -22), seg(SegKind::Line, 10, -30),
+               seg(SegKind::Line, 20, -30)},
+              true);
   std::vector<Move> moves = roughTurning(c, {2, 0.5, 0, 0});
   // The pass of level 8 inside the groove, and the wall follow after it.
   bool found = false;
@@ -377,7 +386,8 @@ TEST(LatheG71TypeII, PocketIsRoughedAndFollowedUp) {
   }
   EXPECT_TRUE(found) << dump(moves);
   std::vector<Pt> shape = {{10, 2}, {10, -10}, {6, -14}, {6, -18}, {10, -22}, {10, -30}, {20, -30}};
-  expectEnvelope({20, 2}, moves, [&](double z) { return shapeX(shape, z); }, 2, -29.9);
+  expectEnvelope(
+      {20, 2}, moves, [&](double z) { return shapeX(shape, z); }, 2, -29.9);
   EXPECT_EQ(moves.back().kind, SegKind::Rapid);
   EXPECT_NEAR(moves.back().end.x, 20, kTol);
   EXPECT_NEAR(moves.back().end.z, 2, kTol);
@@ -397,13 +407,20 @@ TEST(LatheG71TypeII, TwoPocketsWithAllowance) {
     z -= 0.1;  // undo the W shift, then add the U shift to the result
     double x;
     if (z > 0 || z < -34) return std::nullopt;
-    if (z > -5) x = 12;
-    else if (z > -10) x = 12 - (-5 - z);
-    else if (z > -15) x = 7 + (-10 - z);
-    else if (z > -18) x = 12;
-    else if (z > -26) x = 12 - std::sqrt(std::max(0.0, 16 - (z + 22) * (z + 22)));
-    else if (z > -30) x = 12;
-    else x = 12 + 2 * (-30 - z);
+    if (z > -5)
+      x = 12;
+    else if (z > -10)
+      x = 12 - (-5 - z);
+    else if (z > -15)
+      x = 7 + (-10 - z);
+    else if (z > -18)
+      x = 12;
+    else if (z > -26)
+      x = 12 - std::sqrt(std::max(0.0, 16 - (z + 22) * (z + 22)));
+    else if (z > -30)
+      x = 12;
+    else
+      x = 12 + 2 * (-30 - z);
     return x + 0.2;
   };
   expectEnvelope({20, 2}, moves, shape, 0.05, -33.95);
@@ -472,7 +489,9 @@ std::optional<double> shapeAt(const Contour& c, double dx, double dz, double z) 
   return lowest;
 }
 
-Pt swapped(const Pt& p) { return {p.z, p.x}; }
+Pt swapped(const Pt& p) {
+  return {p.z, p.x};
+}
 SegKind mirrored(SegKind k) {
   return k == SegKind::ArcCw ? SegKind::ArcCcw : k == SegKind::ArcCcw ? SegKind::ArcCw : k;
 }
@@ -490,8 +509,9 @@ TEST(LatheG71TypeII, RandomShapesNeverGougeAndLeaveTheShape) {
     ASSERT_NO_THROW(moves = roughTurning(c, p));
     double zEnd = c.segs.back().end.z + p.allowZ;
     double z0 = c.segs[0].end.z + p.allowZ;
-    expectEnvelope(c.start, moves, [&](double z) { return shapeAt(c, p.allowX, p.allowZ, z); },
-                   z0 - 0.0123, zEnd + 0.0137);
+    expectEnvelope(
+        c.start, moves, [&](double z) { return shapeAt(c, p.allowX, p.allowZ, z); }, z0 - 0.0123,
+        zEnd + 0.0137);
     // G72 is G71 with the axes swapped.
     Contour f = c;
     f.start = swapped(c.start);
@@ -540,8 +560,8 @@ TEST(LatheG71TypeII, RandomShapesNeverGougeAndLeaveTheShape) {
 // x = 14 - 4 sin 60). Retract: +0.5 in Z, +0.5 in X (back towards the start).
 TEST(LatheG72, FaceShapeWithArc) {
   Contour c = contour({22, 2}, {seg(SegKind::Rapid, 22, -6), seg(SegKind::Line, 14, -6),
-                                seg(SegKind::ArcCcw, 10, -2, 14, -2),
-                                seg(SegKind::Line, 10, 0), seg(SegKind::Line, 0, 0)});
+                                seg(SegKind::ArcCcw, 10, -2, 14, -2), seg(SegKind::Line, 10, 0),
+                                seg(SegKind::Line, 0, 0)});
   std::vector<Move> moves = roughFacing(c, {2, 0.5, 0, 0});
   std::vector<Want> want;
   double x4 = 14 - 4 * std::sin(std::numbers::pi / 3);
@@ -565,9 +585,9 @@ TEST(LatheG72, FaceShapeWithArc) {
 // Steps with U0.4 W0.3: shifted shape (22.2,-7.7) (16.2,-7.7) (16.2,-3.7) (8.2,-3.7)
 // (8.2,0.3) (0.2,0.3). Depth 3 from Z2: levels -1 (ends at X8.2), -4 and -7 (X16.2).
 TEST(LatheG72, FaceStepsWithAllowance) {
-  Contour c = contour({22, 2}, {seg(SegKind::Rapid, 22, -8), seg(SegKind::Line, 16, -8),
-                                seg(SegKind::Line, 16, -4), seg(SegKind::Line, 8, -4),
-                                seg(SegKind::Line, 8, 0), seg(SegKind::Line, 0, 0)});
+  Contour c = contour(
+      {22, 2}, {seg(SegKind::Rapid, 22, -8), seg(SegKind::Line, 16, -8), seg(SegKind::Line, 16, -4),
+                seg(SegKind::Line, 8, -4), seg(SegKind::Line, 8, 0), seg(SegKind::Line, 0, 0)});
   std::vector<Move> moves = roughFacing(c, {3, 0.5, 0.2, 0.3});
   std::vector<Want> want;
   for (auto [level, xEnd] :
@@ -653,22 +673,22 @@ TEST(LatheG90, FourTaperSignCases) {
 
 TEST(LatheG90, StraightTurning) {
   expectMoves(singleCycle({25, 2}, {20, -30}, 0, false), {{SegKind::Rapid, 20, 2},
-                                                         {SegKind::Line, 20, -30},
-                                                         {SegKind::Line, 25, -30},
-                                                         {SegKind::Rapid, 25, 2}});
+                                                          {SegKind::Line, 20, -30},
+                                                          {SegKind::Line, 25, -30},
+                                                          {SegKind::Rapid, 25, 2}});
 }
 
 // G94 X20 Z-5 R-2 from X60 Z2: rapid in Z to Z-7 (end Z + R), feed to X20 Z-5 (the taper
 // face), feed out in Z to Z2, rapid back in X.
 TEST(LatheG94, FaceCycleWithTaper) {
   expectMoves(singleCycle({30, 2}, {10, -5}, -2, true), {{SegKind::Rapid, 30, -7},
+                                                         {SegKind::Line, 10, -5},
+                                                         {SegKind::Line, 10, 2},
+                                                         {SegKind::Rapid, 30, 2}});
+  expectMoves(singleCycle({30, 2}, {10, -5}, 0, true), {{SegKind::Rapid, 30, -5},
                                                         {SegKind::Line, 10, -5},
                                                         {SegKind::Line, 10, 2},
                                                         {SegKind::Rapid, 30, 2}});
-  expectMoves(singleCycle({30, 2}, {10, -5}, 0, true), {{SegKind::Rapid, 30, -5},
-                                                       {SegKind::Line, 10, -5},
-                                                       {SegKind::Line, 10, 2},
-                                                       {SegKind::Rapid, 30, 2}});
 }
 
 // ---------------------------------------------------------------- G92
@@ -776,8 +796,19 @@ TEST(LatheG76, PassDepthsFlankInfeedAndChamfer) {
   p.lead = 2.5;
   Pt start{12.5, 5}, end{8.466, -30};
   std::vector<Move> moves = multipleThreading(start, end, p);
-  std::vector<double> depths = {0.4, 0.4 * std::sqrt(2.0), 0.4 * std::sqrt(3.0), 0.8, 0.9, 1.0,
-                                1.1, 1.2, 1.3, 1.4, 1.484, 1.534, 1.534};
+  std::vector<double> depths = {0.4,
+                                0.4 * std::sqrt(2.0),
+                                0.4 * std::sqrt(3.0),
+                                0.8,
+                                0.9,
+                                1.0,
+                                1.1,
+                                1.2,
+                                1.3,
+                                1.4,
+                                1.484,
+                                1.534,
+                                1.534};
   ASSERT_EQ(moves.size(), depths.size() * 6) << dump(moves);
   double tan30 = std::tan(std::numbers::pi / 6);
   for (size_t n = 0; n < depths.size(); ++n) {
@@ -845,29 +876,36 @@ TEST(LatheCycleAlarms, RoughingChecks) {
   Contour good = steppedOd();
   expectAlarm([&] { roughTurning(good, {0, 0.5, 0, 0}); }, AlarmId::CycleIllegalCommand);
   expectAlarm([&] { roughFacing(good, {-1, 0.5, 0, 0}); }, AlarmId::CycleIllegalCommand);
-  expectAlarm([&] { roughTurning(contour({25, 2}, {}), {2, 0.5, 0, 0}); },
-              AlarmId::CycleSequenceNotFound);
+  expectAlarm(
+      [&] {
+        roughTurning(contour({25, 2}, {}), {2, 0.5, 0, 0});
+      },
+      AlarmId::CycleSequenceNotFound);
   Contour arcFirst = contour({25, 2}, {seg(SegKind::ArcCw, 10, 2, 17.5, 2)});
   expectAlarm([&] { roughTurning(arcFirst, {2, 0.5, 0, 0}); }, AlarmId::ShapeFirstBlockNotG00G01);
-  expectAlarm([&] { patternRepeating(arcFirst, {1, 1, 0, 0, 2}); },
-              AlarmId::ShapeFirstBlockNotG00G01);
+  expectAlarm(
+      [&] {
+        patternRepeating(arcFirst, {1, 1, 0, 0, 2});
+      },
+      AlarmId::ShapeFirstBlockNotG00G01);
   // A groove in a type I shape (the ns block names only X).
-  Contour groove = contour({20, 2}, {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10),
-                                     seg(SegKind::Line, 6, -14), seg(SegKind::Line, 10, -18),
-                                     seg(SegKind::Line, 20, -18)});
+  Contour groove = contour(
+      {20, 2}, {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10), seg(SegKind::Line, 6, -14),
+                seg(SegKind::Line, 10, -18), seg(SegKind::Line, 20, -18)});
   expectAlarm([&] { roughTurning(groove, {2, 0.5, 0, 0}); }, AlarmId::ShapeNotMonotonous);
   groove.nsNamesZ = true;  // type II accepts it
   EXPECT_NO_THROW(roughTurning(groove, {2, 0.5, 0, 0}));
   // Z going back is refused even in type II.
-  Contour back = contour({20, 2}, {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10),
-                                   seg(SegKind::Line, 14, -8), seg(SegKind::Line, 20, -8)},
+  Contour back = contour({20, 2},
+                         {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10),
+                          seg(SegKind::Line, 14, -8), seg(SegKind::Line, 20, -8)},
                          true);
   expectAlarm([&] { roughTurning(back, {2, 0.5, 0, 0}); }, AlarmId::ShapeNotMonotonous);
   // An arc that turns back along Z: a half circle from X10 Z-10 to X20 Z-10 around X15
   // Z-10, through Z-15 and back to Z-10.
-  Contour bulge = contour({25, 2}, {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10),
-                                    seg(SegKind::ArcCw, 20, -10, 15, -10),
-                                    seg(SegKind::Line, 25, -12)},
+  Contour bulge = contour({25, 2},
+                          {seg(SegKind::Rapid, 10, 2), seg(SegKind::Line, 10, -10),
+                           seg(SegKind::ArcCw, 20, -10, 15, -10), seg(SegKind::Line, 25, -12)},
                           true);
   expectAlarm([&] { roughTurning(bulge, {2, 0.5, 0, 0}); }, AlarmId::ShapeNotMonotonous);
   // Compared in least increments, a real reversal (5 mm) is still one.
@@ -880,10 +918,16 @@ TEST(LatheCycleAlarms, RoughingChecks) {
 
 TEST(LatheCycleAlarms, OtherCycles) {
   expectAlarm([&] { finishing(contour({25, 2}, {})); }, AlarmId::CycleSequenceNotFound);
-  expectAlarm([&] { patternRepeating(filletShape(), {1, 1, 0, 0, 0}); },
-              AlarmId::CycleIllegalCommand);
-  expectAlarm([&] { peckCycle({10, 1}, {16, -5}, {0.5, 0, 4, 0}, false); },
-              AlarmId::CycleIllegalCommand);
+  expectAlarm(
+      [&] {
+        patternRepeating(filletShape(), {1, 1, 0, 0, 0});
+      },
+      AlarmId::CycleIllegalCommand);
+  expectAlarm(
+      [&] {
+        peckCycle({10, 1}, {16, -5}, {0.5, 0, 4, 0}, false);
+      },
+      AlarmId::CycleIllegalCommand);
   ThreadParams p;
   p.height = 1.534;
   p.firstCut = 0.4;

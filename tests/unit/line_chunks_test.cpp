@@ -2,6 +2,8 @@
 // (lang/line_chunks.hpp): every piece size must compile to exactly the Program of the whole
 // text, wherever the buffer cuts a line, and whatever the text's last line, CR LF ends, leader
 // before a '%' or line longer than the buffer.
+#include "lang/line_chunks.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -9,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "lang/line_chunks.hpp"
 #include "lang/parser.hpp"
 #include "program_compare.hpp"
 
@@ -50,9 +51,13 @@ void expectSameForEveryChunk(const std::string& text, ParseOptions options = {})
 }  // namespace
 
 TEST(LineChunks, PiecesAreWholeLinesThatMakeTheText) {
-  const std::vector<std::string> texts = {
-      "",       "\n",       "X1.",         "X1.\n",     "\n\n\nX1.\r\nY2.\r\n",
-      "G01 X1. Y2.\nX3.\nlast line without newline", std::string(100, 'X') + "\nY\n" + std::string(40, 'Z')};
+  const std::vector<std::string> texts = {"",
+                                          "\n",
+                                          "X1.",
+                                          "X1.\n",
+                                          "\n\n\nX1.\r\nY2.\r\n",
+                                          "G01 X1. Y2.\nX3.\nlast line without newline",
+                                          std::string(100, 'X') + "\nY\n" + std::string(40, 'Z')};
   for (const std::string& text : texts)
     for (size_t chunk = 1; chunk <= text.size() + 2; ++chunk) {
       SCOPED_TRACE("text '" + text + "' chunk " + std::to_string(chunk));
@@ -98,9 +103,10 @@ TEST(LineChunks, LineHintCountsASmallTextAndScalesALargeOne) {
 // Lines cut at every offset: plain lines (the fast path), lines the general compiler takes,
 // CR LF, blank lines, a last line without '\n'.
 TEST(LineChunks, EveryBufferSizeCompilesTheSameProgram) {
-  expectSameForEveryChunk("%\nO0001 (T)\nG90 G21 G01 F100.\nN10 X1.25 Y-2.5\nX3. (C) Y4.\n\n"
-                          "#1=2\nX#1\nWHILE[#1LT4]DO1\n#1=#1+1\nEND1\nGOTO 20\nN20 X5.\r\nY6.\r\n"
-                          "M30\n%\n");
+  expectSameForEveryChunk(
+      "%\nO0001 (T)\nG90 G21 G01 F100.\nN10 X1.25 Y-2.5\nX3. (C) Y4.\n\n"
+      "#1=2\nX#1\nWHILE[#1LT4]DO1\n#1=#1+1\nEND1\nGOTO 20\nN20 X5.\r\nY6.\r\n"
+      "M30\n%\n");
   expectSameForEveryChunk("G90 G21\nG01 X1. Y2. F300.\nX3.\n  \nY4.");  // no '%', no final '\n'
   expectSameForEveryChunk("O1\r\nG01 X1. F100.\r\nX2.\r\nM30\r\n");
   expectSameForEveryChunk("%O1200(TITLE)\nX1.\nX2.;Y3.%\nO1300\nX4.\n");
@@ -120,16 +126,16 @@ TEST(LineChunks, LeaderBeforeALaterPercentIsDropped) {
 // (26.13): every piece size compiles them as the whole text does.
 TEST(LineChunks, TapeMarksLeaderCommentsAndByteOrderMark) {
   for (const std::string& text :
-       {std::string("O0001\nG01 X1. F100.\nX2.\nM30\n%\n"),         // only a trailing '%'
-        std::string("O0001\nX1.\nM30\n%\x1a"),                       // and a DOS EOF after it
-        std::string("%\nO0001\nX1.\nM30\n%\nO0002\nX3.\n%\n"),      // text after the closing '%'
+       {std::string("O0001\nG01 X1. F100.\nX2.\nM30\n%\n"),     // only a trailing '%'
+        std::string("O0001\nX1.\nM30\n%\x1a"),                  // and a DOS EOF after it
+        std::string("%\nO0001\nX1.\nM30\n%\nO0002\nX3.\n%\n"),  // text after the closing '%'
         std::string("%\n(PART NAME)\n(REV B)\nO0001 (T)\nX1.\nM30\n%\n"),
         std::string("% (PART NAME)\nO0001\nX1.\n%\n"),
         std::string("(PART)\nO0001\nX1.\n(NOT A LEADER)\nO0002\nX2.\n"),
-        std::string("O0001\n(STEPOVER 50%)\nX1.\n"),
-        std::string("\xEF\xBB\xBFO0001\nX1. Y2.\n"), std::string(""), std::string("%\n"),
-        std::string("\n\n%\n\n"), std::string("(ONLY A COMMENT)\n"),
-        std::string("O0001\nX1.\n%\n(END)\n"), std::string("(A)\n%\n(B)\n")}) {
+        std::string("O0001\n(STEPOVER 50%)\nX1.\n"), std::string("\xEF\xBB\xBFO0001\nX1. Y2.\n"),
+        std::string(""), std::string("%\n"), std::string("\n\n%\n\n"),
+        std::string("(ONLY A COMMENT)\n"), std::string("O0001\nX1.\n%\n(END)\n"),
+        std::string("(A)\n%\n(B)\n")}) {
     SCOPED_TRACE(text);
     expectSameForEveryChunk(text);
   }
@@ -168,9 +174,13 @@ TEST(LineChunks, TapeMarksDecideWhatIsTheProgram) {
   EXPECT_EQ(headerless.programs[0].number, -1);
   EXPECT_EQ(headerless.programs[0].blocks.size(), 2u);
   // No program text: one program whose only block is PS9008, at the '%' line or line 1.
-  const std::pair<const char*, uint32_t> none[] = {
-      {"", 1},     {"%\n", 1},      {"\n\n%\n", 3},         {"(ONLY A COMMENT)\n", 1},
-      {"\xEF\xBB\xBF", 1}, {"(A)\n%\n", 2}, {"(A)\n%\n(B)\n", 2}};
+  const std::pair<const char*, uint32_t> none[] = {{"", 1},
+                                                   {"%\n", 1},
+                                                   {"\n\n%\n", 3},
+                                                   {"(ONLY A COMMENT)\n", 1},
+                                                   {"\xEF\xBB\xBF", 1},
+                                                   {"(A)\n%\n", 2},
+                                                   {"(A)\n%\n(B)\n", 2}};
   for (const auto& [text, line] : none) {
     ParsedFile f = parse(text);
     ASSERT_EQ(f.programs.size(), 1u) << text;
@@ -230,9 +240,10 @@ TEST(LineChunks, LongProgramAtSeveralBufferSizes) {
 // Random texts of tape marks, comments, headers, filler bytes and blocks: every piece size
 // compiles them as the whole text does (the tape state carries across pieces).
 TEST(LineChunks, RandomTapeTextsCompileAlikeInPieces) {
-  const char* const kParts[] = {"%",      "%\n",    "\n",      "(T)",   "(50%)", "O0001", "O0002",
-                                "X1.",    " ",      "\x1a",    "\r\n",  "#1=2",  "N5",    ";",
-                                "<SUB>",  "G01 Y2", "\xEF\xBB\xBF", "(",   ")",     "%O0003", "M30"};
+  const char* const kParts[] = {"%",     "%\n",    "\n",    "(T)",    "(50%)",        "O0001",
+                                "O0002", "X1.",    " ",     "\x1a",   "\r\n",         "#1=2",
+                                "N5",    ";",      "<SUB>", "G01 Y2", "\xEF\xBB\xBF", "(",
+                                ")",     "%O0003", "M30"};
   std::mt19937 rng(2426);
   for (int k = 0; k < 300; ++k) {
     std::string text;

@@ -1,18 +1,18 @@
 // The compact move records of the time stage's worker (src/timing/move_codec.hpp): every
 // field the stage reads comes back with the control's bits, whatever the record leaves out.
+#include "timing/move_codec.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <bit>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
-
-#include "timing/move_codec.hpp"
 
 using namespace ncvm;
 namespace mc = ncvm::movecodec;
@@ -77,7 +77,8 @@ std::vector<uint64_t> roundTrip(const std::vector<MoveEvent>& moves) {
   uint64_t at2 = 0;
   for (const MoveEvent& e : moves) at2 += mc::encodeAny<N>(e, &any[at2], h2, 1);
   EXPECT_EQ(at2, at);
-  EXPECT_TRUE(std::equal(any.begin(), any.begin() + static_cast<std::ptrdiff_t>(at), stream.begin()));
+  EXPECT_TRUE(
+      std::equal(any.begin(), any.begin() + static_cast<std::ptrdiff_t>(at), stream.begin()));
   MoveEvent got;
   at = 0;
   for (size_t k = 0; k < moves.size(); ++k) {
@@ -151,29 +152,29 @@ TEST(MoveCodec, EveryOmissionRebuildsTheControlsBits) {
     usual();
   };
   usual();
-  changed([](MoveEvent& m) { m.at.n = 120; });                 // N (always sent)
-  changed([](MoveEvent& m) { m.at.line += 5; });               // a jump (a loop, a call)
-  changed([](MoveEvent& m) { m.at.line -= 1; });               // the same line again
-  changed([](MoveEvent& m) { m.at.file = 3; });                // another file
-  changed([&](MoveEvent& m) { m.at.programName = &progB; });   // another program
-  changed([](MoveEvent& m) { m.feed = 2500; });                // feed
-  changed([](MoveEvent& m) { m.mode = MoveMode::Rapid; });     // mode
-  changed([](MoveEvent& m) { m.exactStop = true; });           // G09
-  changed([](MoveEvent& m) { m.inch = true; });                // G20
-  changed([](MoveEvent& m) { m.thread = true; });              // G32
-  changed([](MoveEvent& m) { m.skip = true; });                // G31
-  changed([](MoveEvent& m) { m.start[1] += 1e-9; });           // start is not the last end
-  changed([](MoveEvent& m) { m.start[2] = -0.0, m.end[2] = 0; });  // -0.0 is not +0.0
-  changed([](MoveEvent& m) { m.mstart[0] += 10; });            // mstart is not the last mend
+  changed([](MoveEvent& m) { m.at.n = 120; });                       // N (always sent)
+  changed([](MoveEvent& m) { m.at.line += 5; });                     // a jump (a loop, a call)
+  changed([](MoveEvent& m) { m.at.line -= 1; });                     // the same line again
+  changed([](MoveEvent& m) { m.at.file = 3; });                      // another file
+  changed([&](MoveEvent& m) { m.at.programName = &progB; });         // another program
+  changed([](MoveEvent& m) { m.feed = 2500; });                      // feed
+  changed([](MoveEvent& m) { m.mode = MoveMode::Rapid; });           // mode
+  changed([](MoveEvent& m) { m.exactStop = true; });                 // G09
+  changed([](MoveEvent& m) { m.inch = true; });                      // G20
+  changed([](MoveEvent& m) { m.thread = true; });                    // G32
+  changed([](MoveEvent& m) { m.skip = true; });                      // G31
+  changed([](MoveEvent& m) { m.start[1] += 1e-9; });                 // start is not the last end
+  changed([](MoveEvent& m) { m.start[2] = -0.0, m.end[2] = 0; });    // -0.0 is not +0.0
+  changed([](MoveEvent& m) { m.mstart[0] += 10; });                  // mstart is not the last mend
   changed([](MoveEvent& m) { m.mstart[1] = -0.0, m.mend[1] = 0; });  // -0.0 is not +0.0
-  changed([](MoveEvent& m) { m.mend[2] += 0.5; });             // the offset changes
+  changed([](MoveEvent& m) { m.mend[2] += 0.5; });                   // the offset changes
   // An offset that does not round-trip: end + (mend - end) is not mend.
   changed([](MoveEvent& m) { m.end[0] = 1, m.mend[0] = 1e-20; });
-  changed([](MoveEvent& m) {                                   // G96 with G95
+  changed([](MoveEvent& m) {  // G96 with G95
     m.perRev = 0.2, m.surfaceSpeed = 180, m.rpmLimit = 3000;
   });
   changed([](MoveEvent& m) { m.rpmLimit = 2500; });
-  changed([](MoveEvent& m) {                                   // an arc
+  changed([](MoveEvent& m) {  // an arc
     m.arc = true, m.mode = MoveMode::Cw, m.center = {1, 2, 3}, m.plane = 18;
   });
   changed([](MoveEvent& m) { m.time = std::numeric_limits<double>::quiet_NaN(); });

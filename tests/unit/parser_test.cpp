@@ -1,11 +1,11 @@
+#include "lang/parser.hpp"
+
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <charconv>
 #include <string>
 #include <vector>
-
-#include "lang/parser.hpp"
 
 using namespace ncvm;
 
@@ -139,7 +139,7 @@ TEST(Parser, LongNumberFlag) {
   EXPECT_TRUE(w[5].flags & kLongNumber);   // R123456789
   EXPECT_FALSE(w[6].flags & kLongNumber);  // M
   static_assert(sizeof(Word) == 16);       // the IR's memory per word
-  static_assert(sizeof(Block) <= 36);     // and per block
+  static_assert(sizeof(Block) <= 36);      // and per block
 }
 
 // The compiler marks the blocks the executor's plain-motion path may read directly.
@@ -224,8 +224,8 @@ TEST(Parser, MinusOnIntegerLettersOnlyInMacroCalls) {
 
 // Issue 26.14: a number beyond a double's range is PS0003 where a shorter over-long one is.
 TEST(Parser, NumbersBeyondADoubleAreTooManyDigits) {
-  for (const std::string& digits : {std::string(20, '9'), std::string(308, '9'), std::string(309, '9'),
-                                    std::string(400, '9')}) {
+  for (const std::string& digits : {std::string(20, '9'), std::string(308, '9'),
+                                    std::string(309, '9'), std::string(400, '9')}) {
     Program c = one(("O1\n#1=" + digits + "\n").c_str());
     ASSERT_EQ(c.errors.size(), 1u);
     EXPECT_EQ(c.errors[0].code, "PS0003");

@@ -23,7 +23,7 @@ inline void expectSameLoc(const SourceLoc& a, const SourceLoc& b, const std::str
 }
 
 inline void expectSameAlarms(const std::vector<Alarm>& a, const std::vector<Alarm>& b,
-                      const std::string& what) {
+                             const std::string& what) {
   ASSERT_EQ(a.size(), b.size()) << what;
   for (size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k].code, b[k].code) << what << " alarm " << k;

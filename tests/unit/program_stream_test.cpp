@@ -152,7 +152,7 @@ TEST(ProgramStream, ATitleBeforeTheHeaderAndAByteOrderMarkStream) {
 // scan refuses the first (compiled whole), and both keep their program.
 TEST(ProgramStream, TapeEndsInBigFiles) {
   for (const std::string& text : {std::string("O0001\nG90 G21\n") + plainLines(400) + "M30\n%\n",
-                                   std::string(kHead) + plainLines(400) + "M30\n%\x1a\x1a\n"}) {
+                                  std::string(kHead) + plainLines(400) + "M30\n%\x1a\x1a\n"}) {
     const fs::path f = writeFile("tape_end.nc", text);
     const Outcome whole = run(f, false);
     const Outcome streamed = run(f, true, defaultSetup(), {}, 64);

@@ -110,7 +110,8 @@ TEST(Setup, TargetFilesAreFoundBesideTheSetup) {
   std::string path = dir + "/target_setup.toml";
   {
     std::ofstream f(path);
-    f << "[machine]\nkind = \"lathe\"\n[target]\npolyline = \"contour.csv\"\n[probe]\nuse_stock = true\n";
+    f << "[machine]\nkind = \"lathe\"\n[target]\npolyline = \"contour.csv\"\n[probe]\nuse_stock = "
+         "true\n";
   }
   ncvm::Setup s = loadSetup(path);
   EXPECT_EQ(s.target.polyline, (std::filesystem::path(dir) / "contour.csv").string());

@@ -197,8 +197,7 @@ TEST(StraightMove, RapidsAsTheGeneralPathMovesThem) {
   ncvm::Setup noZRate = fromToml("[axes.Z]\nrapid = 0\n");
   expectSame(noZRate, rapids, "an axis without a rapid rate");
   expectSame(fromToml("[axes.Y]\nmax = 50.0\n"), rapids, "rapid over travel", false);
-  expectSame(defaultSetup(), "O0008\nG90 G00 X1. F0\nX2. Y3.\nG00 F-1. X3.\nM30\n",
-             "F in rapids");
+  expectSame(defaultSetup(), "O0008\nG90 G00 X1. F0\nX2. Y3.\nG00 F-1. X3.\nM30\n", "F in rapids");
 }
 
 // Blocks whose words are #variables or expressions, as macros write them: the straight path
@@ -219,7 +218,8 @@ TEST(StraightMove, VariableWordsAsTheGeneralPathReadsThem) {
   const Outcome fast = run(defaultSetup(), vars, true);
   EXPECT_GT(fast.straight, 45u) << "the loop's G01 and G02 blocks take the straight path";
   ncvm::Setup setup = defaultSetup();
-  expectSame(setup, "O0010\nG90 G01 F100.\n#1=10000000*1000000\nX1.\nX#1\nM30\n", "value out of range");
+  expectSame(setup, "O0010\nG90 G01 F100.\n#1=10000000*1000000\nX1.\nX#1\nM30\n",
+             "value out of range");
   expectSame(setup, "O0010\nG90 G01 F100.\n#1=0\nX1.\nX[1/#1]\nM30\n", "division by zero");
   expectSame(setup, "O0010\nG90 G01 F100.\nX1.\nY#[-5]\nM30\n", "bad variable number");
   expectSame(setup, "O0010\nG90 G01 F100.\n#1=-5\nX1.\nF#1 X2.\nM30\n", "negative F");
@@ -231,7 +231,8 @@ TEST(StraightMove, VariableWordsAsTheGeneralPathReadsThem) {
 // general way, the run going on after it.
 TEST(StraightMove, RunsOfStraightBlocksKeepTheBlockBookkeeping) {
   const std::string run =
-      "O0011\nG90 G21 G17 G54 G94 G01 F1000.\nN10 X1. Y1.\nX2.\nN30 X3. Y2.\n#101=#4114\n/X4. Y3.\n/2 X5.\n"
+      "O0011\nG90 G21 G17 G54 G94 G01 F1000.\nN10 X1. Y1.\nX2.\nN30 X3. Y2.\n#101=#4114\n/X4. "
+      "Y3.\n/2 X5.\n"
       "X6. Y4.\nG18 G02 X8. Z0 R1.\nG17\nX9.\nX10. K1.\nX11. Y5.\nG00 X0 Y0\nM30\n";
   expectSame(defaultSetup(), run, "a run");
   expectSame(fromToml("[block_skip]\n1 = true\n"), run, "block skip 1");
