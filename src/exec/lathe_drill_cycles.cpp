@@ -55,8 +55,10 @@ bool Executor::latheDrillCycle(const Words& w, bool cycleCommanded) {
     cycle_.bottom = inc ? cycle_.r + z : z;
     cycle_.haveZ = true;
   }
-  if (w.has('Q')) cycle_.q = std::llabs(lengthNm(w.value('Q'), w.hasPoint('Q'), axis));
-  if (w.has('P')) cycle_.dwellMs = static_cast<double>(std::llround(w.value('P')));
+  if (w.has('Q') && !w.pqBelongToCall())
+    cycle_.q = std::llabs(lengthNm(w.value('Q'), w.hasPoint('Q'), axis));
+  if (w.has('P') && !w.pqBelongToCall())
+    cycle_.dwellMs = static_cast<double>(std::llround(w.value('P')));
   int repeats = w.has('K') ? static_cast<int>(std::llround(w.value('K'))) : 1;
   if (repeats < 0 || repeats > 9999) throw AlarmError(AlarmId::IntegerOverflow, "K");
 

@@ -38,10 +38,14 @@ void Executor::skipMove(const Words& w) {
   std::array<int64_t, kMaxAxes> fromM = machine_, toM;
   for (size_t k = 0; k < kMaxAxes; ++k) toM[k] = target[k] + offset_[k];
   checkStroke(toM);
-  // Tip positions in machine coordinates, mm: the gauge point less the tool shift.
+  // Ball centres in machine coordinates, mm: the gauge point less the tool shift is the tip;
+  // on a mill whose length offsets end at the bottom of the ball (probe.length_to) the
+  // centre is a radius above it, along the spindle (+Z).
+  const double centreAboveTip = !lathe_ && probe.lengthToBallBottom ? r : 0.0;
   auto tipMm = [&](const std::array<int64_t, kMaxAxes>& m) {
     Vec3 p{};
     for (size_t k = 0; k < 3; ++k) p[k] = static_cast<double>(m[k] - toolShift_[k]) / 1e6;
+    p[2] += centreAboveTip;
     return p;
   };
   std::optional<double> t;

@@ -42,6 +42,14 @@ struct Words {
   bool has(char letter) const { return present & bit(letter); }
   bool hasPoint(char letter) const { return point & bit(letter); }
   double value(char letter) const { return val[static_cast<size_t>(letter - 'A')]; }
+  bool hasM(int32_t code) const {
+    for (int k = 0; k < nm; ++k)
+      if (m[static_cast<size_t>(k)] == code) return true;
+    return false;
+  }
+  // P and Q of an M98/M99 block are the call's (program, sequence number), not data of the
+  // canned cycle that is active around the call.
+  bool pqBelongToCall() const { return hasM(98) || hasM(99); }
   bool any(const char* letters) const {
     for (const char* c = letters; *c; ++c)
       if (has(*c)) return true;

@@ -427,8 +427,13 @@ void applyKey(Setup& s, const std::string& key, const SettingValue& v, int line,
       s.probe.missAlarm = asBool(v, w);
     else if (rest == "use_stock")
       s.probe.useStock = asBool(v, w);
-    else
-      bad(w, "probe keys: tool ball_diameter miss_alarm use_stock");
+    else if (rest == "length_to") {
+      const auto& m = asString(v, w);
+      if (m != "ball_bottom" && m != "ball_centre")
+        bad(w, "expected \"ball_bottom\" or \"ball_centre\"");
+      s.probe.lengthToBallBottom = m == "ball_bottom";
+    } else
+      bad(w, "probe keys: tool ball_diameter miss_alarm use_stock length_to");
     return;
   }
   if (head == "solids") {

@@ -61,6 +61,10 @@ struct ProbeSpec {
   double ballDiameter = 0;  // stylus ball; 0 = the tool's diameter from [tools]
   bool missAlarm = false;   // G31 that touches nothing: alarm PS9010 instead of ending normally
   bool useStock = false;    // G31 touches the simulated stock ([stock]) instead of [[solids]]
+  // Mill: where the tool length offset ends on the ball. A probe (and a ball mill) is set on a
+  // tool setter or a reference surface, so the length ends at the bottom of the ball and the
+  // ball's centre is a radius above the tip; false keeps the centre on the tip.
+  bool lengthToBallBottom = true;
 };
 
 // The raw material of the stock simulation (src/sim), in program units, in the coordinates

@@ -37,7 +37,7 @@ const std::vector<std::string>& setupKeyNames() {
     add("tools.N",
         {"type", "diameter", "corner_radius", "length", "point_angle", "flute_length",
          "nose_radius", "tip", "insert_angle", "edge_length", "holder_diameter", "holder_length"});
-    add("probe", {"tool", "ball_diameter", "miss_alarm", "use_stock"});
+    add("probe", {"tool", "ball_diameter", "miss_alarm", "use_stock", "length_to"});
     add("solids.N", {"kind", "frame", "center", "min", "max", "point", "normal", "diameter",
                      "outer_diameter", "top", "bottom"});
     add("stock", {"frame", "diameter", "bore_diameter", "length", "front_z", "min", "max", "cell"});

@@ -124,7 +124,7 @@ TEST(Setup, TargetFilesAreFoundBesideTheSetup) {
 TEST(SetupKeys, EverySuggestedKeyIsAccepted) {
   const char* values[] = {"1",      "4",   "true",    "mill",  "0i-F",    "A",
                           "IS-B",   "mm",  "flat",    "box",   "machine", "sharp",
-                          "simple", "N10", "[0,0,0]", "[0,0]", "x.txt"};
+                          "simple", "N10", "[0,0,0]", "[0,0]", "x.txt",   "ball_bottom"};
   for (std::string key : setupKeyNames()) {
     for (auto p = key.find(".X"); p != std::string::npos; p = key.find(".X"))
       key.replace(p, 2, ".Y");
