@@ -70,16 +70,12 @@ std::string camProgram(int lines) {
 }
 
 // The same 100,000-block program with the cycle-time model off (no stage), in its simple
-// mode, and in its dynamic mode (look-ahead planning with the 0i-MF defaults). The stage
-// runs on a worker thread (timing.threads = 1; without a sink the moves go to it as compact
-// records) or, in the *Sync variants, on the calling thread (timing.threads = 0, the
-// default of `ncvm run`). Google Benchmark's "CPU" is the calling (the control's) thread's
-// CPU time and "Time" the wall time; the process_time variants count both threads' CPU.
-void camRun(benchmark::State& state, bool timing, bool dynamic, int threads = 1) {
+// mode, and in its dynamic mode (look-ahead planning with the 0i-MF defaults), on the
+// control's thread as in `ncvm run`.
+void camRun(benchmark::State& state, bool timing, bool dynamic) {
   std::string text = camProgram(static_cast<int>(state.range(0)));
   ncvm::Setup setup = ncvm::defaultSetup();
   setup.timing.dynamic = dynamic;
-  setup.timing.threads = threads;
   for (auto _ : state) {
     ncvm::Session s(setup);
     s.setTiming(timing);
@@ -98,26 +94,12 @@ void BM_CamTimingSimple(benchmark::State& state) {
 void BM_CamTimingDynamic(benchmark::State& state) {
   camRun(state, true, true);
 }
-void BM_CamTimingSimpleSync(benchmark::State& state) {
-  camRun(state, true, false, 0);
-}
-void BM_CamTimingDynamicSync(benchmark::State& state) {
-  camRun(state, true, true, 0);
-}
 BENCHMARK(BM_CamNoTiming)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CamTimingSimple)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CamTimingDynamic)->Arg(100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CamTimingSimpleSync)->Arg(100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CamTimingDynamicSync)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CamNoTiming)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CamTimingSimple)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CamTimingDynamic)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_CamTimingDynamicSync)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_CamTimingDynamic)
-    ->Arg(100000)
-    ->Unit(benchmark::kMillisecond)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
 
 }  // namespace
 

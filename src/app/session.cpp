@@ -10,7 +10,6 @@
 #include "sim/stock_model.hpp"
 #include "sim/stock_probe.hpp"
 #include "timing/timing_stage.hpp"
-#include "timing/timing_thread.hpp"
 
 #ifndef NCVM_SOURCE_MACROS
 #define NCVM_SOURCE_MACROS ""
@@ -138,20 +137,10 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     throw SetupError("probe.use_stock: this stock model cannot be probed", "probe.use_stock");
   // The time model sits between the control and the caller's sinks.
   std::unique_ptr<TimingStage> stage;
-  // With a worker thread the stage and the sinks after it run beside the control: the
-  // control never reads the modelled times. The inspector reads the control from a sink,
-  // so it keeps them on the control's thread.
-  const int threads = timingThreads_ >= 0 ? timingThreads_ : setup_.timing.threads;
-  std::unique_ptr<TimingThread> worker;
-  if (timing_ && threads > 0 && !inspector_ && TimingThread::usable(sink)) {
-    // On a machine without A, B and C the moves go to the worker with three axes.
-    bool abc = false;
-    for (size_t k = 3; k < kMaxAxes; ++k) abc = abc || setup_.axes[k].present;
-    worker = std::make_unique<TimingThread>(sink, files_, abc);
-  }
-  usedThread_ = worker != nullptr;
-  // Without a sink the stage keeps no events, only what the time report needs.
-  if (timing_) stage = std::make_unique<TimingStage>(setup_, worker ? worker->stageSink() : sink);
+  // Without a sink the stage keeps no events, only what the time report needs. It runs on
+  // the control's thread (a worker thread beside the control did not pay: docs/performance.md,
+  // "The time stage's worker thread, removed").
+  if (timing_) stage = std::make_unique<TimingStage>(setup_, sink);
   if (stage) {
     // Each file's line table is allocated once, at the file's size, when its first line runs.
     std::vector<uint32_t> lines;
@@ -165,11 +154,7 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
     }
     stage->setLineCounts(std::move(lines));
   }
-  if (worker) worker->start(*stage);
-  EventSink* first = worker  ? static_cast<EventSink*>(worker.get())
-                     : stage ? static_cast<EventSink*>(stage.get())
-                     : sink  ? sink
-                             : &none;
+  EventSink* first = stage ? static_cast<EventSink*>(stage.get()) : sink ? sink : &none;
   // The stock takes every event straight from the control, before the stage's look-ahead
   // holds cutting moves back: when a G31 asks the stock, every earlier move is in it. It
   // needs no modelled times.
@@ -198,10 +183,6 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   r.end = exec.run(*main_);
   if (stage) {
     try {
-      // The worker takes what is left in its ring and stops; the stage is this thread's
-      // again. A sink's exception the control has not seen comes out here.
-      if (worker)
-        if (std::exception_ptr e = worker->finish()) std::rethrow_exception(e);
       stage->finish();
     } catch (const AlarmError& e) {
       // A sink refused the moves the stage still held (the trace size limit).

@@ -76,13 +76,6 @@ class Session {
 
   // The cycle-time stage runs by default (setup [timing]); off only for measurements.
   void setTiming(bool on) { timing_ = on; }
-  // Threads for the time stage and the sinks after it (overrides the setup's timing.threads):
-  // 1 a worker thread beside the control, 0 the control's own thread. The worker is used only
-  // when it can be: more than one hardware thread, no inspector, and sinks that may run on
-  // any thread (EventSink::runsOnAnyThread); the results are the same either way.
-  void setTimingThreads(int n) { timingThreads_ = n; }
-  // Whether the last run() used the worker thread.
-  bool usedTimingThread() const { return usedThread_; }
   // Lets a sink read the control while it runs (the web viewer's per-step snapshots):
   // called once with the executor before the first block; the executor lives until run()
   // returns.
@@ -101,8 +94,6 @@ class Session {
   std::string stockOut_;
   int viewerGrid_ = 0;  // 0: no Result::viewerStock
   bool timing_ = true;
-  int timingThreads_ = -1;  // -1: the setup's timing.threads
-  bool usedThread_ = false;
 };
 
 nlohmann::json alarmJson(const Alarm& a, const SourceFiles& files);

@@ -161,14 +161,6 @@ class EventSink {
   virtual void onComment(const CommentEvent&) {}
   virtual void onWorkOrigin(const WorkOriginEvent&) {}
   virtual void onSignal(const SignalEvent&) {}
-  // May this sink run on another thread than the control's (src/timing/timing_thread.hpp)?
-  // Only when it touches nothing but its own state and what the events point to, and throws
-  // only at a size limit it reports in byteHeadroom() (or on an I/O error).
-  virtual bool runsOnAnyThread() const { return false; }
-  // A sink that throws once its output passes a size (the trace limit): the bytes it still
-  // takes. The worker thread hands the sink back to the control's thread before the limit
-  // can be reached, so the alarm comes at the same event as without it.
-  virtual uint64_t byteHeadroom() const { return UINT64_MAX; }
 };
 
 // Forwards every event to several sinks in order.
@@ -213,16 +205,6 @@ class FanoutSink final : public EventSink {
   }
   void onWorkOrigin(const WorkOriginEvent& e) override {
     for (auto* s : sinks_) s->onWorkOrigin(e);
-  }
-  bool runsOnAnyThread() const override {
-    for (auto* s : sinks_)
-      if (!s->runsOnAnyThread()) return false;
-    return true;
-  }
-  uint64_t byteHeadroom() const override {
-    uint64_t h = UINT64_MAX;
-    for (auto* s : sinks_) h = std::min(h, s->byteHeadroom());
-    return h;
   }
 
  private:

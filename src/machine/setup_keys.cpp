@@ -63,8 +63,7 @@ const std::vector<std::string>& setupKeyNames() {
                    "spindle_wait",
                    "operation_comments",
                    "feed_override",
-                   "rapid_override",
-                   "threads"});
+                   "rapid_override"});
     add("timing.axes.X", {"rapid_t1", "rapid_t2", "accel", "corner_speed_difference"});
     for (const char* alias : {"DPI", "NAT", "LRP", "PRT", "TCS", "CCV", "CLV", "SBM", "M3B", "TVC"})
       k.push_back(alias);

@@ -55,7 +55,6 @@ class ReportRecorder final : public EventSink {
   void onSkip(const SkipEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onWorkOrigin(const WorkOriginEvent& e) override { frame_.origin(e); }
-  bool runsOnAnyThread() const override { return true; }
 
   const std::vector<PathVertex>& path() const { return path_; }
   uint64_t moves() const { return moves_; }

@@ -41,12 +41,6 @@ class TraceWriter final : public EventSink {
   void onSignal(const SignalEvent& e) override;
   void onOffset(const OffsetEvent& e) override;
   void onSkip(const SkipEvent& e) override;
-  // Formats into its own buffer and writes its own FILE: it may run on a worker thread.
-  bool runsOnAnyThread() const override { return true; }
-  uint64_t byteHeadroom() const override { return bytes() >= maxBytes_ ? 0 : maxBytes_ - bytes(); }
-  // No event's line is longer than this plus six times (an escaped byte is at most \u00XX)
-  // its file and program names and texts: the worker's bound (src/timing/timing_thread.cpp).
-  static constexpr uint64_t kMaxLineFixed = 4096 + 512;
 
  private:
   // A line other than a move's is built in ev_ with appends, from begin() to end().

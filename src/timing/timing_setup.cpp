@@ -96,19 +96,18 @@ void applyTimingKey(TimingSetup& t, const std::string& key, const TimingValue& v
     t.feedOverride = positive(v);
   else if (field == "rapid_override")
     t.rapidOverride = positive(v);
-  else if (field == "threads") {
-    double d = nonNegative(v);
-    if (d != 0 && d != 1)
-      throw std::invalid_argument("0 (the control's thread) or 1 (a worker thread)");
-    t.threads = static_cast<int>(d);
-  } else
+  else if (field == "threads")
+    throw std::invalid_argument(
+        "removed: the time stage runs on the control's thread (its worker thread did not pay, "
+        "docs/performance.md)");
+  else
     throw std::invalid_argument(
         "timing keys: model rapid_t1 rapid_t2 accel corner_speed_difference accel_change_time "
         "lookahead_blocks "
         "arc_clamp_feed arc_clamp_radius arc_clamp_min_feed block_time in_position_time "
         "tool_change_time t_code_time m_code_time coolant_time spindle_accel spindle_wait "
         "feed_override "
-        "rapid_override operation_comments threads, axes.X.<per-axis key>");
+        "rapid_override operation_comments, axes.X.<per-axis key>");
 }
 
 }  // namespace ncvm

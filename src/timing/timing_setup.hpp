@@ -35,10 +35,6 @@ struct TimingSetup {
   // A comment alone on its line starts an operation of the time report (as a tool change
   // does) and names it; false: operations start at tool changes only.
   bool operationComments = true;
-  // Threads for the time stage and the sinks after it: 1 runs them on a worker thread beside
-  // the control (src/timing/timing_thread.hpp), 0 on the control's own thread. Never changes
-  // a result; the worker is used only where it can be (docs/performance.md).
-  int threads = 0;
 };
 
 // A [timing] value from the setup file or --set.
