@@ -44,7 +44,7 @@ export class SetupLayers {
       }
       this.changed();
     });
-    this.tabName = "the Setup tab's text (empty or as opened: the program's own setup)";
+    this.tabName = "this tab's setup (empty or as opened: the program's own)";
     this.render();
   }
 
