@@ -70,12 +70,6 @@ export class SetupLayers {
     }
   }
 
-  // What the tab's row stands for ("this tab's text", "face-milling-g42.toml (the program's own)").
-  setTabName(name) {
-    this.tabName = name;
-    this.render();
-  }
-
   changed() {
     localStorage.setItem(KEY, JSON.stringify(this.layers));
     this.render();
