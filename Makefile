@@ -1,5 +1,5 @@
 # The set-up commands of the README: `make demo` and `make test`. Bare `make` lists them.
-.PHONY: help demo serve test test-asan bench build configure deps format clean
+.PHONY: help demo serve test test-asan bench build configure deps format clean screenshots
 
 help:
 	@echo "make demo       install what is missing, build ncvm, run every bundled example (out/demo/)"
@@ -9,6 +9,7 @@ help:
 	@echo "make bench      build and run the benchmarks (docs/performance.md)"
 	@echo "make build      build everything (Release, build/release)"
 	@echo "make format     clang-format the C++ sources"
+	@echo "make screenshots build, retake the web viewer's pictures in docs/images/"
 	@echo "make deps       install the Debian packages and the web viewer's npm packages"
 	@echo "make clean      remove build/"
 
@@ -39,6 +40,9 @@ test-asan: deps
 
 bench: build
 	@bench/run-benchmarks
+
+screenshots: build
+	@NCVM_BIN=build/release/bin/ncvm NCVM_WEB=build/release/web node scripts/viewer-screenshots.mjs
 
 format:
 	@find src tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i

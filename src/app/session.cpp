@@ -159,6 +159,18 @@ Session::Result Session::run(EventSink* sink, const nlohmann::json* machineState
   // holds cutting moves back: when a G31 asks the stock, every earlier move is in it. It
   // needs no modelled times.
   FanoutSink both;
+  // Before the stock takes a move, the watcher sees the stock of the moves before it.
+  struct StockWatch final : EventSink {
+    StockModel* model = nullptr;
+    const std::function<void(StockModel&, uint64_t)>* watch = nullptr;
+    uint64_t moves = 0;
+    void onMove(const MoveEvent&) override { (*watch)(*model, moves++); }
+  } watch;
+  if (stock && stockWatch_) {
+    watch.model = stock.get();
+    watch.watch = &stockWatch_;
+    both.add(&watch);
+  }
   if (stock) {
     both.add(stock.get());
     both.add(first);

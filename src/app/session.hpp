@@ -18,6 +18,8 @@
 
 namespace ncvm {
 
+class StockModel;
+
 // Where the bundled macros/ folder is: $NCVM_MACROS, beside the executable
 // (../share/ncvm/macros), or the source tree this binary was built from.
 std::string bundledMacrosFolder();
@@ -65,6 +67,12 @@ class Session {
   // With simulateStock, also returns the final stock in Result::viewerStock
   // (StockModel::viewerStock: a mill's grid at most maxGrid cells a side).
   void keepViewerStock(int maxGrid) { viewerGrid_ = maxGrid; }
+  // With simulateStock, calls `watch(model, moves)` before the stock model takes each move:
+  // the model then holds the first `moves` moves of the run (the web viewer's stock along
+  // the timeline, server/stock_snapshots.hpp).
+  void watchStock(std::function<void(StockModel&, uint64_t)> watch) {
+    stockWatch_ = std::move(watch);
+  }
   // Runs the main program; `sink` receives every event (may be nullptr). With a
   // machine state (memoryToJson format) the control starts from it instead of the setup's
   // offsets and #500-#999; Result::machineState is what it keeps afterwards.
@@ -93,6 +101,7 @@ class Session {
   bool stockOn_ = false;
   std::string stockOut_;
   int viewerGrid_ = 0;  // 0: no Result::viewerStock
+  std::function<void(StockModel&, uint64_t)> stockWatch_;
   bool timing_ = true;
 };
 

@@ -65,6 +65,8 @@ int serveCommand(const ServeOptions& o) {
   std::string examples =
       folderBesideBinary("NCVM_EXAMPLES", "../share/ncvm/examples", "", NCVM_SOURCE_EXAMPLES);
   if (!examples.empty()) c.catalog.add("examples", examples);
+  c.presetsDir =
+      folderBesideBinary("NCVM_PRESETS", "../share/ncvm/presets", "", NCVM_SOURCE_PRESETS);
   for (const auto& r : o.roots) {
     std::error_code ec;
     if (!fs::is_directory(r, ec)) throw std::runtime_error("--root " + r + ": not a folder");

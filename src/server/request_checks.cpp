@@ -1,10 +1,12 @@
 #include "server/request_checks.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <filesystem>
 
 #include "server/safe_path.hpp"
+#include "server/setup_layers.hpp"
 
 namespace ncvm::server {
 
@@ -157,6 +159,11 @@ RunRequest runRequestFromBody(const std::string& body, const ServerConfig& cf) {
     job["setup_name"] = cf.setupName;
     if (!cf.setupDir.empty()) job["setup_dir"] = cf.setupDir;
   }
+  // Layers (setup_layers.hpp): presets and setup files, in order around the setup above.
+  if (auto bad = addSetupLayers(in, cf, job)) return refuse(400, *bad);
+  // The stock along the timeline (stock_snapshots.hpp): the first interval, in moves.
+  if (auto every = in.find("stock_every"); every != in.end() && every->is_number_integer())
+    job["stock_every"] = std::clamp<int64_t>(every->get<int64_t>(), 1, int64_t{1} << 30);
   if (in.contains("root") && in["root"].is_string()) {
     auto folder = cf.catalog.folder(in["root"].get<std::string>(), dir);
     if (!folder) return refuse(400, "bad folder: not inside the server's folders");

@@ -10,7 +10,9 @@
 #include "app/session.hpp"
 #include "exec/executor.hpp"
 #include "server/safe_path.hpp"
+#include "server/setup_layers.hpp"
 #include "server/step_recorder.hpp"
+#include "server/stock_snapshots.hpp"
 #include "server/viewer_stream.hpp"
 #include "server/viewer_tools.hpp"
 
@@ -27,6 +29,8 @@ namespace {
 
 // A mill stock reaches the browser as at most 256 x 256 heights (about 0.6 MB of JSON).
 constexpr int kViewerGrid = 256;
+// The timeline's stock: at most 64 snapshots (a mill's 256 KB each, 16 MB in all).
+constexpr size_t kStockSnapshots = 64;
 
 RunCaps capsFrom(const nlohmann::json& j) {
   RunCaps c;
@@ -175,7 +179,9 @@ Prepared prepare(const nlohmann::json& request, const std::vector<NamedFolder>& 
   if (p.name.empty() || p.name.size() > 255) p.name = "program.nc";
 
   Setup setup = defaultSetup();
-  if (request.contains("setup") && request["setup"].is_string())
+  if (request.contains("setup_layers") && request["setup_layers"].is_array())
+    setup = layeredSetup(request["setup_layers"]);  // a preset, then the job, ...
+  else if (request.contains("setup") && request["setup"].is_string())
     setup = parseSetup(request["setup"].get_ref<const std::string&>(),
                        request.value("setup_name", "setup.toml"));
   confineSetupFiles(setup, request);
@@ -278,11 +284,24 @@ void runViewerJob(const nlohmann::json& request, const std::function<void(std::s
                                             session.setup().limits.maxTraceBytes, out);
     stream->renameText([&](std::string text) { return withFolderNames(std::move(text), folders); });
     session.setInspector([&](Executor& e) { stream->attach(&e); });
+    // "stock_every": the stock along the timeline, a snapshot every N moves to start with
+    // (stock_snapshots.hpp); the page asks for it.
+    std::unique_ptr<StockSnapshots> snapshots;
+    if (session.setup().stock.present && request.contains("stock_every") &&
+        request["stock_every"].is_number_integer() && request["stock_every"].get<int64_t>() > 0) {
+      snapshots = std::make_unique<StockSnapshots>(
+          kViewerGrid, request["stock_every"].get<uint64_t>(), kStockSnapshots);
+      session.watchStock([&](StockModel& m, uint64_t moves) { snapshots->offer(m, moves); });
+    }
     Session::Result r = session.run(stream.get());
     stream->attach(nullptr);
     nlohmann::json tail;
     finalParts(tail, session, r, p.name);
     renameFolders(tail, folders);
+    if (snapshots) {
+      for (const std::string& f : snapshots->frames()) out(f);
+      tail["stock_snapshots"] = {{"every", snapshots->every()}, {"count", snapshots->count()}};
+    }
     stream->finish(std::move(tail));
   } catch (const SetupError& e) {
     fail(std::string("setup error: ") + e.what());

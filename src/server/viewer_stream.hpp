@@ -17,6 +17,9 @@
 //           machine (work offset, EXT, G52, G92/G50; no tool offset) from that event on, in
 //           the setup's units, X a radius; sent before the events frame of its batch, so the
 //           page can draw the path fixed on the machine as the stock is (stock.frame)
+//   kind 6  stock: the stock as cut by the first k moves of the run, a snapshot of the stock
+//           simulation along the timeline (server/stock_snapshots.hpp has the layout); sent
+//           before the end frame, in the order of k
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -42,7 +45,8 @@ enum class FrameKind : uint32_t {
   Steps = 2,
   Notes = 3,
   End = 4,
-  Origins = 5
+  Origins = 5,
+  Stock = 6
 };
 
 // Event kinds of the `kind` column: 0-3 are moves (MoveMode), the others one per event type.

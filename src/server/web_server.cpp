@@ -15,6 +15,7 @@
 #include "server/guarded_http.hpp"
 #include "server/request_checks.hpp"
 #include "server/safe_path.hpp"
+#include "server/setup_layers.hpp"
 #include "server/viewer_stream.hpp"
 
 namespace ncvm::server {
@@ -180,6 +181,10 @@ WebServer::WebServer(ServerConfig config)
 
   s.Get("/api/files", [this](const httplib::Request&, httplib::Response& res) {
     sendJson(res, 200, config_.catalog.list());
+  });
+
+  s.Get("/api/setups", [this](const httplib::Request&, httplib::Response& res) {
+    sendJson(res, 200, setupFiles(config_));
   });
 
   s.Get("/api/file", [this](const httplib::Request& req, httplib::Response& res) {

@@ -23,6 +23,7 @@ struct ServerConfig {
   std::string setupText;  // the default setup (--setup), empty for ncvm's default
   std::string setupName;
   std::string setupDir;              // its folder: the files it names are read there (run_job.hpp)
+  std::string presetsDir;            // presets/: setups a run may layer (setup_layers.hpp)
   std::string startRoot, startPath;  // the program the page opens with (PROGRAM)
   std::string workerExe;             // the ncvm binary (for `ncvm serve-worker`)
   RunCaps caps;

@@ -28,6 +28,7 @@ class LatheStock final : public StockModel {
   void onWorkOrigin(const WorkOriginEvent& e) override { frame_.origin(e); }
   nlohmann::json finish(const std::string& outDir) override;
   nlohmann::json viewerStock(int maxGrid) override;
+  ViewerStockData viewerSnapshot(int maxGrid) override;
   const ProbeWorld* probeWorld() const override { return &probe_; }
 
   // The pieces, for tests and benchmarks. Points are (radius, z) of the programmed point.

@@ -26,6 +26,7 @@ class MillStock final : public StockModel {
   void onWorkOrigin(const WorkOriginEvent& e) override { frame_.origin(e); }
   nlohmann::json finish(const std::string& outDir) override;
   nlohmann::json viewerStock(int maxGrid) override;
+  ViewerStockData viewerSnapshot(int maxGrid) override;
   const ProbeWorld* probeWorld() const override { return &probe_; }
 
   MillSim& sim() { return *sim_; }

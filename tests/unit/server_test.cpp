@@ -1030,3 +1030,56 @@ TEST_F(ServerTest, NoCompressionOnLoopback) {
   EXPECT_EQ(r->get_header_value("Content-Encoding"), "");
   EXPECT_TRUE(json::parse(r->body).contains("version"));
 }
+
+// Setups in layers through the HTTP server and its worker process (setup_layers.hpp): the
+// layer files listed by GET /api/setups, applied in the order sent around the program's own
+// setup; and the stock along the timeline as kind 6 frames of /api/run.bin.
+TEST_F(ServerTest, SetupLayersAndStockSnapshotsThroughTheWorker) {
+  write(root.path / "parts" / "cut-x150.nc", "O0003\nG90 G54 G00 X1.\nM30\n");
+  write(root.path / "parts" / "cut.toml", "[work_offsets]\nG54 = [10.0, 0.0, 0.0]\n");
+  write(root.path / "parts" / "shift.toml", "[work_offsets]\nG54 = [100.0, 0.0, 0.0]\n");
+  auto listed = client().Get("/api/setups");
+  ASSERT_TRUE(listed);
+  json files = json::parse(listed->body)["roots"][0]["files"];
+  EXPECT_EQ(files, json({"parts/cut.toml", "parts/p1.toml", "parts/shift.toml"}));
+  auto machineX = [&](const json& setups) {
+    auto r = post(json{{"root", "root"}, {"path", "parts/cut-x150.nc"}, {"setups", setups}}.dump());
+    EXPECT_TRUE(r);
+    if (!r) return -1.0;
+    EXPECT_EQ(r->status, 200) << r->body;
+    return json::parse(r->body)["state"]["position"]["machine"][0].get<double>();
+  };
+  const json shift = {{"root", "root"}, {"path", "parts/shift.toml"}};
+  EXPECT_DOUBLE_EQ(machineX(json::array({{{"tab", true}}, shift})), 101.0);  // the later layer wins
+  EXPECT_DOUBLE_EQ(machineX(json::array({shift, {{"tab", true}}})), 11.0);
+  EXPECT_DOUBLE_EQ(machineX(json::array({shift})),
+                   11.0);  // the program's own setup last when not placed
+  auto refused = post(json{{"root", "root"},
+                           {"path", "parts/cut-x150.nc"},
+                           {"setups", {{{"root", "root"}, {"path", "parts/link.nc"}}}}}
+                          .dump());
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 400);
+
+  const std::string stock =
+      "[tools.1]\ntype = \"flat\"\ndiameter = 10.0\n"
+      "[stock]\nmin = [0.0, 0.0, -10.0]\nmax = [50.0, 20.0, 0.0]\ncell = 0.5\n";
+  auto r = client().Post("/api/run.bin",
+                         json{{"program",
+                               "O1\nT1 M06\nG00 X-10. Y10. Z-2.\nG01 X60. F500.\n"
+                               "G00 Z20.\nM30\n"},
+                              {"setup", stock},
+                              {"stock_every", 1}}
+                             .dump(),
+                         "application/json");
+  ASSERT_TRUE(r);
+  size_t shots = 0;
+  json end;
+  for (const Frame& f : framesOf(r->body)) {
+    if (f.kind == static_cast<uint32_t>(FrameKind::Stock)) ++shots;
+    if (f.kind == static_cast<uint32_t>(FrameKind::End)) end = json::parse(f.payload);
+  }
+  ASSERT_TRUE(end["ok"].get<bool>()) << end.dump();
+  EXPECT_EQ(shots, end["state"]["moves"].get<size_t>());  // one before each move
+  EXPECT_EQ(end["stock_snapshots"]["count"].get<size_t>(), shots);
+}

@@ -16,6 +16,7 @@ async function call(url, options) {
 
 export const info = () => call('api/info');
 export const files = () => call('api/files');
+export const setups = () => call('api/setups');
 export const file = (root, path) => call(`api/file?root=${encodeURIComponent(root)}&path=${encodeURIComponent(path)}`);
 
 // Runs `req` ({program, name, setup, root, dir} or, for a file of the server's folders

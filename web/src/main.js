@@ -14,6 +14,8 @@ import { ColourBy } from './colour_by.js';
 import { Measure } from './measure.js';
 import { drawnTool } from './machine_frame.js';
 import { ToolShapes } from './tool_shape.js';
+import { StockTimeline } from './stock.js';
+import { SetupLayers } from './setup_layers.js';
 import { renderPosition, renderVariables, renderOffsets, renderModal, renderMessages, renderTime } from './panels.js';
 
 const $ = (id) => document.getElementById(id);
@@ -25,6 +27,8 @@ const progress = new RunProgress($('view'));
 const colourBy = new ColourBy(view, document.querySelector('.legend'));
 const measure = new Measure(view, $('measure'), $('measure-panel'));
 const toolShapes = new ToolShapes(view);
+const stockTimeline = new StockTimeline(view, $('stock-label'));
+const setupLayers = new SetupLayers($('setup-layers'));
 initTheme(view, $('theme'));
 const link = new PathLink(view, (line) => editor.selectLine(line));
 editor.onCursorLine = (line) => link.highlightLine(line);
@@ -142,8 +146,13 @@ async function run() {
   const setup = $('setup-text').value;
   if (setup.trim() && !(ui.source.kind === 'server' && setup === ui.source.setup)) req.setup = setup;
   if (ui.source.root && !unchanged) Object.assign(req, { root: ui.source.root, dir: ui.source.dir });
+  const layers = setupLayers.request(); // presets and job files around the tab's setup
+  if (layers) req.setups = layers;
   progress.set('running');
   const lines = editor.lineCount || 0;
+  // The stock along the timeline: a snapshot every N moves, N doubled by the server until
+  // the run fits in 64 (CAM code is about a move a line, so N starts near lines / 64).
+  req.stock_every = 2 ** Math.max(0, Math.floor(Math.log2(Math.max(1, lines / 64))));
   const result = await api.run(req, (p) => progress.update(p, lines), lines);
   $('run').disabled = false;
   if (!result.ok) {
@@ -167,6 +176,7 @@ async function run() {
   colourBy.setModel(model);
   measure.setModel(model);
   toolShapes.setModel(model);
+  stockTimeline.setModel(model);
   themeGrid(view);
   link.setModel(model, ui.source.name);
   link.highlightLine(editor.cursorLine);
@@ -197,6 +207,7 @@ function goTo(pos) {
   const tool = toolAt(m, p);
   const done = Math.floor(p);
   toolShapes.update(tool.index);
+  stockTimeline.update(done);
   view.setProgress(verticesDone(m, done), drawnTool(m, tool), done);
   const idx = p > done ? done : done - 1; // the event in progress, else the last one done
   const ev = eventAt(m, idx);
@@ -248,6 +259,7 @@ document.addEventListener('keydown', (e) => {
   const inf = await api.info();
   if (inf.setup) $('setup-text').placeholder = `# empty: the server's --setup ${inf.setup_name}`;
   await loadFiles();
+  api.setups().then((l) => setupLayers.setFiles(l));
   renderVariables($('p-vars'), null);
   const draft = await workspace.draft();
   const started = (s) => inf.start && s?.kind === 'server' && s.root === inf.start.root && s.path === inf.start.path;

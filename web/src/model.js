@@ -110,6 +110,7 @@ export class ModelBuilder {
     this.tail = null;
     this.origins = []; // [event, x, y, z]: where work zero is on the machine (machine_frame.js)
     this.frame = 'work';
+    this.stockShots = []; // kind 6 payloads: the stock along the timeline (stock.js)
   }
 
   // One frame of wire.js: {kind, payload}.
@@ -127,6 +128,7 @@ export class ModelBuilder {
     } else if (frame.kind === 3) for (const l of lines(frame.payload)) this.noteLines.push(l);
     else if (frame.kind === 4) this.tail = json(frame.payload);
     else if (frame.kind === 5) for (const o of json(frame.payload).origins) this.origins.push(o);
+    else if (frame.kind === 6) this.stockShots.push(frame.payload);
   }
 
   // Appends the segment from point p (at offset i) to point q (at offset j) to the vertex,
@@ -251,7 +253,7 @@ export class ModelBuilder {
       pathFirst: g(this.pathFirst), path: g(this.path), posEvent: g(this.posEvent), pos: g(this.pos),
       vertices: g(this.vertices), colors: g(this.colors), vertexEvent: g(this.vertexEvent), bounds: box, shiftFrom: fixed.shiftFrom, shiftBy: fixed.shiftBy,
       stepEvent: Int32Array.from(steps.map((s) => s[0])), stepDelta: steps.map((s) => s[1]), checkpoints,
-      notes, blockLast: blockEnds(this),
+      notes, blockLast: blockEnds(this), stockShots: this.stockShots,
     };
   }
 }
