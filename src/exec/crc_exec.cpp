@@ -267,8 +267,7 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       s.cornerArc = g39Pending_;
       s.cornerHasDir = g39Pending_ && g39HasDir_;
       s.cornerDir = g39Dir_;
-      if (!lathe_ && side != crc::Side::Off && !arc &&
-          (w.has("IJK"[pi.u]) || w.has("IJK"[pi.v]))) {
+      if (!lathe_ && side != crc::Side::Off && !arc && (w.has("IJK"[pi.u]) || w.has("IJK"[pi.v]))) {
         // G41/G42 with I, J, K in a G00/G01 block (a start-up block, or G41/G42 again in
         // offset mode) sets the direction of the offset vector on the control; ncvm does not
         // model it, and must not move as if the words were not there.
