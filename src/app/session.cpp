@@ -36,6 +36,10 @@ static ParseOptions parseOptionsFor(const Setup& s) {
   o.eightDigitO = s.programNumberDigits == 8;
   o.hIsAxis = s.kind == MachineKind::Lathe && s.axes[5].present;
   o.blockSkip = s.blockSkip;
+  for (size_t k = 0; k < 10; ++k) {
+    o.callG[k] = static_cast<int>(s.param(std::to_string(6050 + k), 0));
+    o.callM[k] = static_cast<int>(s.param(std::to_string(6080 + k), 0));
+  }
   return o;
 }
 

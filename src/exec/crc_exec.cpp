@@ -267,6 +267,21 @@ bool Executor::crcBlock(const Words& w, const std::array<int64_t, kMaxAxes>& tar
       s.cornerArc = g39Pending_;
       s.cornerHasDir = g39Pending_ && g39HasDir_;
       s.cornerDir = g39Dir_;
+      if (!lathe_ && side != crc::Side::Off && !arc && (w.has("IJK"[pi.u]) || w.has("IJK"[pi.v]))) {
+        // G41/G42 with I, J, K in a G00/G01 block (a start-up block, or G41/G42 again in
+        // offset mode) sets the direction of the offset vector on the control; ncvm does not
+        // model it, and must not move as if the words were not there.
+        for (int k = 0; k < w.ng; ++k) {
+          const int g = w.g[static_cast<size_t>(k)];
+          if (g != 410 && g != 420) continue;
+          AlarmError e(AlarmId::ImproperGCode,
+                       fmt::format("G{} with I/J/K (the direction of the offset vector) is not "
+                                   "supported by ncvm yet",
+                                   g / 10));
+          e.col = w.gcol[static_cast<size_t>(k)];
+          throw e;
+        }
+      }
       if (side == crc::Side::Off && w.any("IJK") && !arc) {
         s.hasIJK = true;
         s.ijk = {w.has("IJK"[pi.u]) ? w.value("IJK"[pi.u]) : 0.0,

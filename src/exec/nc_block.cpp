@@ -145,7 +145,12 @@ void Executor::gatherWords(const Block& b, Words& w) {
     bool macroCall = false;
     for (int k = 0; k < w.ng; ++k) {
       const int g = w.g[static_cast<size_t>(k)];
-      macroCall |= g == 650 || g == 660 || g == 661;
+      macroCall |= g == 650 || g == 660 || g == 661 ||
+                   (g % 10 == 0 && g < 10000 && gCall_[static_cast<size_t>(g / 10)] > 0);
+    }
+    for (int k = 0; k < w.nm; ++k) {
+      const int m = w.m[static_cast<size_t>(k)];
+      macroCall |= m > 0 && m < 1000 && mMacroCall_[static_cast<size_t>(m)] > 0;
     }
     for (uint32_t k = 0; k < b.nWords; ++k)
       if (words[k].flags & kLongNumber) checkDigits(words[k], macroCall);

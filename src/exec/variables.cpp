@@ -48,6 +48,10 @@ static AlarmError unknownVariable(int64_t n) {
       {5000, 5999, "position information, work offsets"},
       {7000, 7999, "additional work offsets G54.1 P1-P48 (mill)"},
       {10000, 19999, "tool offsets, additional work offsets G54.1 P1-P300"},
+      // Real 30i programs use these as common variables (#900000-) and to read parameters
+      // (#100000-); no Fanuc manual found gives them (docs/real-programs.md).
+      {100000, 199999, "#100000-#199999, outside the Fanuc variable tables ncvm models"},
+      {900000, 999999, "#900000-#999999, outside the Fanuc variable tables ncvm models"},
   };
   for (const Range& r : known)
     if (n >= r.from && n <= r.to)
@@ -182,8 +186,14 @@ Value Executor::readSystem(int64_t n) {
     return Value::num(static_cast<double>((signalOut_[0] >> (n - 1100)) & 1u));
   if (n == 1132 || n == 1133)
     return Value::num(static_cast<double>(signalOut_[static_cast<size_t>(n - 1132)]));
-  if (n >= 4001 && n <= 4030) return Value::num(modal_.g[static_cast<size_t>(n - 4000)] / 10.0);
-  if (n >= 4201 && n <= 4230) return Value::num(modal_.g[static_cast<size_t>(n - 4200)] / 10.0);
+  if ((n >= 4001 && n <= 4030) || (n >= 4201 && n <= 4230)) {
+    // Parameter 0001#1 (FCV) = 1, the Series 15 program format: the modal groups are read by
+    // their FS15 numbers, where the work coordinate system G54-G59 is group 12 (#4012) and the
+    // macro modal call G66/G67 group 14 (docs/fanuc-decisions.md, "FS15 program format").
+    size_t group = static_cast<size_t>(n % 100);
+    if ((group == 12 || group == 14) && setup_.bit("0001#1")) group = group == 12 ? 14 : 12;
+    return Value::num(modal_.g[group] / 10.0);
+  }
   if ((n >= 4102 && n <= 4130) || (n >= 4302 && n <= 4330)) {
     int64_t k = n >= 4300 ? n - 200 : n;
     switch (k) {

@@ -593,6 +593,12 @@ void Compiler::parseStatements() {
   }
 }
 
+// A G or M word whose code a parameter (6050-6059, 6080-6089) makes a macro call.
+static bool callsMacro(const std::array<int, 10>& codes, const Word& w) {
+  if (w.value != std::floor(w.value) || w.value <= 0) return false;
+  return std::find(codes.begin(), codes.end(), static_cast<int>(w.value)) != codes.end();
+}
+
 void Compiler::commitBlock() {
   Program& p = *prog_;
   uint32_t nWords = static_cast<uint32_t>(p.words.size() - blk_.firstWord);
@@ -603,7 +609,8 @@ void Compiler::commitBlock() {
   for (uint32_t k = blk_.firstWord; k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     if (w.letter == 'G' && w.kind == WordKind::Literal)
-      macroCall |= w.value == 65 || w.value == 66 || w.value == 66.1;
+      macroCall |= w.value == 65 || w.value == 66 || w.value == 66.1 || callsMacro(opt_.callG, w);
+    if (w.letter == 'M' && w.kind == WordKind::Literal) macroCall |= callsMacro(opt_.callM, w);
     forbiddenPoint |= (w.flags & kHasPoint) && forbidsPoint(w.letter);
     forbiddenMinus |= (w.flags & kHasMinus) != 0;
     if (plain) {
@@ -611,8 +618,9 @@ void Compiler::commitBlock() {
       if (plain) seen |= 1u << (w.letter - 'A');
     }
   }
-  // In a macro call every letter but P, L (and G, which is no argument) is an argument: a
-  // signed value that becomes #7, #11, #13, #19, #20 ... (H-2.).
+  // In a macro call (G65, G66, G66.1, or a G/M code a parameter makes one) every letter but
+  // P, L (and G, which is no argument) is an argument: a signed value that becomes #7, #11,
+  // #13, #19, #20 ... (H-2.).
   for (uint32_t k = blk_.firstWord; forbiddenMinus && k < p.words.size(); ++k) {
     const Word& w = p.words[k];
     bool argument = macroCall && w.letter != 'P' && w.letter != 'L' && w.letter != 'G';

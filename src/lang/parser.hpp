@@ -30,6 +30,11 @@ struct ParseOptions {
   // NC block ("G43 H6 Z.25 /M8", as CAM posts write it) skips the rest of the block when its
   // switch is on, which the compiler decides: the switches are fixed for a run.
   std::array<bool, 10> blockSkip{};
+  // G and M codes that call a macro (parameters 6050-6059 and 6080-6089; 0 = none): their
+  // blocks are macro calls like G65, so D H M S T there are signed arguments that take a
+  // point (`G100 D-2.`), which the compiler must know when it checks signs and points.
+  std::array<int, 10> callG{};
+  std::array<int, 10> callM{};
 };
 
 struct ParsedFile {
