@@ -3,9 +3,10 @@
 # unpacked into a scratch root (dpkg-deb -x, no root needed), and run from there: the
 # command, its data relative to its prefix, the Python module. Its Depends name the Debian
 # libraries the binaries link.
-#   deb.sh BUILD_DIR
+#   deb.sh BUILD_DIR [PYTHON]   (with PYTHON, the interpreter the module is built for, the
+#                                module is tried too)
 set -uo pipefail
-build=$(realpath "$1")
+build=$(realpath "$1") python=${2:-}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "FAIL: $*"; [ -f "$tmp/out" ] && tail -40 "$tmp/out"; exit 1; }
@@ -26,4 +27,13 @@ cd "$tmp"
 grep -q "ended: M30\|ended: M02" "$tmp/out" || fail "the example did not end normally"
 cat "$tmp/out"
 echo "Depends: $(cat "$tmp/depends")"
+if [ -n "$python" ]; then
+  PYTHONPATH="$usr/lib/python3/dist-packages" "$python" -c '
+import ncvm, sys
+r = ncvm.run(sys.argv[1])
+assert r.end in ("M30", "M02"), r.end
+assert len(r.moves) > 0
+print("python from the package:", r)' "$usr/share/ncvm/examples/macro-basics/bolt-circle.nc" ||
+    fail "the Python module from the package"
+fi
 echo "deb: ok"

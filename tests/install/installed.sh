@@ -17,9 +17,10 @@ for f in bin/ncvm bin/ncvm-serve include/ncvm/ncvm.hpp include/ncvm/job.hpp incl
          lib/pkgconfig/ncvm.pc share/man/man1/ncvm.1 share/bash-completion/completions/ncvm \
          share/ncvm/macros/O9135.nc share/ncvm/presets/fanuc-0i-mf.toml \
          share/ncvm/examples/macro-basics/bolt-circle.nc share/doc/ncvm/LICENSE \
-         share/doc/ncvm/THIRD-PARTY-NOTICES; do
+         share/doc/ncvm/THIRD-PARTY-NOTICES lib/python3/dist-packages/ncvm/__init__.py; do
   [ -e "$prefix/$f" ] || fail "$f not installed"
 done
+ls "$prefix"/lib/python3/dist-packages/ncvm/_ncvm*.so >/dev/null 2>&1 || fail "no Python module"
 if [ -d "$prefix/share/ncvm/web" ]; then
   [ -f "$prefix/share/ncvm/web/index.html" ] || fail "web assets without index.html"
   leftovers=$(find "$prefix/share/ncvm/web" -name CMakeFiles -o -name '*.cmake' -o -name Makefile)
