@@ -28,7 +28,8 @@ struct Alarm {
 };
 
 // A warning: ncvm's W codes (W001 decimal point, W002 word twice, ...), or the code of an
-// alarm that `check` can only say may happen.
+// alarm that `check` can only say may happen. The code is empty for what loading the
+// programs found (a duplicate program, text after the closing %), which has no place.
 struct Warning {
   std::string code;
   std::string message;
