@@ -134,6 +134,16 @@ TEST(Api, CheckFindsWithoutRunning) {
   EXPECT_NE(c.json.find("W002"), std::string::npos);
 }
 
+TEST(Api, WhatLoadingFindsIsAWarningWithoutCode) {
+  Job job;
+  job.addProgramText("%\nO1\nG0 X1.\nM30\n%\nG0 X5.\n", "w.nc");
+  RunResult r = job.run();
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].code, "");
+  EXPECT_NE(r.warnings[0].message.find("after the closing '%'"), std::string::npos)
+      << r.warnings[0].message;
+}
+
 TEST(Api, VersionIsTheCommandsVersion) {
   EXPECT_EQ(version().rfind(NCVM_PROJECT_VERSION, 0), 0u) << version();
 }
