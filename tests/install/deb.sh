@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # CPack's .deb (cmake/NcvmPackage.cmake): built from the build tree into a scratch folder,
-# unpacked into a scratch root (dpkg-deb -x, no root needed), and run from there: the
-# command, its data relative to its prefix, the Python module. Its Depends name the Debian
-# libraries the binaries link.
+# its installation simulated by apt, unpacked into a scratch root (dpkg-deb -x: nothing is
+# installed on the machine), and run from there: the command, its data relative to its
+# prefix, the Python module. Its Depends name the Debian libraries the binaries link.
 #   deb.sh BUILD_DIR [PYTHON]   (with PYTHON, the interpreter the module is built for, the
 #                                module is tried too)
 set -uo pipefail
@@ -17,6 +17,9 @@ deb=$(ls "$tmp"/pkg/ncvm_*.deb 2>/dev/null | head -1)
 echo "package: $(basename "$deb") ($(du -h "$deb" | cut -f1))"
 dpkg-deb -f "$deb" Depends >"$tmp/depends"
 grep -q "libfmt" "$tmp/depends" || { cat "$tmp/depends"; fail "Depends does not name libfmt"; }
+# It would install on this Debian: apt resolves every Depends (a simulation, nothing changes).
+apt-get install -s "$deb" >"$tmp/out" 2>&1 || fail "apt-get install -s: the Depends cannot be met"
+grep -q "^Inst ncvm " "$tmp/out" || fail "apt-get install -s did not install ncvm"
 dpkg-deb -x "$deb" "$tmp/root" || fail "dpkg-deb -x"
 usr="$tmp/root/usr"
 [ -x "$usr/bin/ncvm" ] || fail "no usr/bin/ncvm in the package"
