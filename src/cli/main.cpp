@@ -66,19 +66,31 @@ void addCommon(CLI::App* cmd, CommonOptions& o) {
 }
 
 void addSetupOptions(CLI::App* cmd, CommonOptions& o) {
-  cmd->add_option(
-      "--setup", o.setupPaths,
-      "machine and job setup (TOML, docs/setup-format.md); repeatable: later files override, "
-      "e.g. a preset then the job");
+  cmd->add_option("--setup", o.setupPaths,
+                  "machine and job setup (TOML, docs/setup-format.md), or a bundled preset's name "
+                  "(fanuc-0i-mf); repeatable: later files override, e.g. a preset then the job");
   cmd->add_option("--lib", o.libs, "folder of programs for M98/G65 calls (repeatable)");
   cmd->add_option("--set", o.sets,
                   "override a setting: 3401#0=1, DPI=1, block_skip.1=true, limits.max_blocks=1000");
   cmd->add_flag("--no-macros", o.noMacros, "do not load the bundled macros/ folder");
 }
 
+// --setup NAME that names no file and has no folder part: the bundled preset NAME(.toml),
+// from the presets/ folder beside the bundled macros (PREFIX/share/ncvm/presets installed).
+std::string setupFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(path, ec) || path.find('/') != std::string::npos) return path;
+  const std::string macros = bundledMacrosFolder();
+  if (macros.empty()) return path;
+  fs::path preset = fs::path(macros).parent_path() / "presets" / path;
+  if (preset.extension() != ".toml") preset += ".toml";
+  return fs::is_regular_file(preset, ec) ? preset.string() : path;
+}
+
 Setup makeSetup(const CommonOptions& o) {
   Setup s = defaultSetup();
-  for (const auto& path : o.setupPaths) loadSetupInto(s, path);
+  for (const auto& path : o.setupPaths) loadSetupInto(s, setupFile(path));
   for (const auto& kv : o.sets) applySetting(s, kv);
   return s;
 }

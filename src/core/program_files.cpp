@@ -26,6 +26,8 @@ bool isProgramName(std::string_view name) {
 bool isProgramFileName(const fs::path& file) {
   static constexpr std::array<std::string_view, 9> kExtensions{
       ".nc", ".tap", ".txt", ".min", ".cnc", ".ptp", ".eia", ".iso", ".anc"};
+  // A CMake project file beside the examples (examples/embed) is .txt but never a program.
+  if (lower(file.filename().string()) == "cmakelists.txt") return false;
   const std::string ext = lower(file.extension().string());
   if (ext.empty()) return isProgramName(file.filename().string());
   return std::find(kExtensions.begin(), kExtensions.end(), ext) != kExtensions.end();

@@ -11,6 +11,7 @@ namespace ncvm {
 // A program file: one of the extensions Fanuc shops and DNC software use (.nc .tap .txt .min
 // .cnc .ptp .eia .iso .anc, in any case), or no extension and a program name: O (or o)
 // followed by digits, as a control's memory card or a DNC folder holds them (O9100, o9100).
+// CMakeLists.txt is not one.
 bool isProgramFileName(const std::filesystem::path& file);
 
 // The names of the setup files a program may run with, best first, as names in the

@@ -25,6 +25,7 @@ printf 'not a program\n' >"$tmp/lib-other/ORDERS"
 d="$tmp/ex"
 mkdir -p "$d/a" "$d/b" "$d/c"
 for f in a/part.nc a/part-x150.NC a/other.tap b/one.eia b/O1234 c/lone.nc; do printf '%%\nO1\nM30\n%%\n' >"$d/$f"; done
+printf 'project(x)\n' >"$d/c/CMakeLists.txt"
 touch "$d/a/part.toml" "$d/a/setup.toml" "$d/b/setup.toml" "$d/b/one-x.toml" "$d/c/extra.toml" "$d/a/README.md"
 (cd "$tmp" && "$ncvm" list ex) >"$tmp/out" || fail "list exit $?"
 expect=$(printf 'ex/a/other.tap\tex/a/setup.toml\nex/a/part-x150.NC\tex/a/part.toml\nex/a/part.nc\tex/a/part.toml\nex/b/O1234\tex/b/setup.toml\nex/b/one.eia\tex/b/setup.toml\nex/c/lone.nc\t-')
