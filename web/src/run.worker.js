@@ -3,9 +3,12 @@
 // transferred, not copied. Messages to the page:
 //   {type: 'progress', events, bytes, line}   after each batch of events
 //   {type: 'done', model}                     model.answer.ok false: the run failed
+//   {type: 'coarse', path}                    then the path's coarse copy for the frames
+//                                             drawn while the camera moves (path_lod.js)
 //   {type: 'error', status, error}            the request was refused (HTTP error)
 import { FrameReader } from './wire.js';
 import { ModelBuilder, transferables } from './model.js';
+import { coarsePath } from './path_lod.js';
 
 self.onmessage = async (e) => {
   const { url, request, expect } = e.data;
@@ -37,8 +40,21 @@ self.onmessage = async (e) => {
       }
     }
     const model = builder.model();
+    // The coarse copy is made after the model is handed over (from copies of the three
+    // arrays it needs), so that it does not delay the first frame.
+    const full = model.answer.ok && { vertices: model.vertices.slice(), colors: model.colors.slice(), vertexEvent: model.vertexEvent.slice() };
     self.postMessage({ type: 'done', model }, transferables(model));
+    if (!full) return;
+    const path = coarsePath(full, coarseTolerance(model.bounds));
+    self.postMessage({ type: 'coarse', path }, transferables(path));
   } catch (err) {
     self.postMessage({ type: 'error', status: 0, error: String(err?.message || err) });
   }
 };
+
+// Merged segments stay within a thousandth of the path's diagonal of the full path: about a
+// pixel when the whole part is in view (1600 x 1000).
+function coarseTolerance(bounds) {
+  if (!bounds) return 0;
+  return Math.hypot(...bounds.max.map((v, k) => v - bounds.min[k])) / 1000;
+}
