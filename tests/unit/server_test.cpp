@@ -166,7 +166,7 @@ TEST(RunJob, StepsHoldWhatChangedAndNothingElse) {
   ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
   const json& st = r["steps"];
   ASSERT_EQ(st.size(), 6u) << st.dump();
-  EXPECT_EQ(st[1]["m"], (json{{"1", 2.0}})) << st[1];               // G02 only
+  EXPECT_EQ(st[1]["m"], (json{{"1", 2.0}})) << st[1];                // G02 only
   EXPECT_EQ(st[2]["m"], (json{{"1", 1.0}, {"F", 200.0}})) << st[2];  // G01 and F200.
   EXPECT_EQ(st[3]["c"], (json{{"#100", 7.0}})) << st[3];             // #100 once
   EXPECT_TRUE(st[4].is_null() || !st[4].contains("c")) << st[4];
