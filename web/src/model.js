@@ -1,6 +1,6 @@
 // The run answer as a timeline, built once (in the run worker, run.worker.js) from the binary
 // frames of wire.js into typed arrays: the events' columns, each move's end points, the
-// toolpath as one vertex buffer with a colour per vertex, and for each event the number of
+// toolpath as one vertex buffer with a colour per vertex (RGBA, see RGBA below), and for each event the number of
 // vertices drawn once it is done (the view shows the timeline as a draw range of that
 // buffer). The control's state at an event is folded from sparse deltas on demand, from
 // checkpoints, so that nothing is rebuilt per scrub or step.
@@ -10,6 +10,10 @@ import { fixOnMachine } from './machine_frame.js';
 const AXES = ['X', 'Y', 'Z', 'A', 'B', 'C'];
 export const COLORS = { rapid: [0xff, 0x55, 0x33], feed: [0x33, 0xcc, 0xff], comp: [0xdd, 0x55, 0xff], thread: [0xff, 0xdd, 0x33] };
 const CHECKPOINT = 64; // steps between full states
+// Bytes of a vertex colour: R, G, B and an opaque alpha. Three bytes a vertex made ANGLE
+// convert the whole buffer to four on the CPU before SwiftShader drew it (bench/viewer: the
+// GPU process's CPU time to the first frame of a million moves 1.6 s -> 0.75 s).
+export const RGBA = 4;
 
 // A typed array that grows by doubling. done() hands out a view of its buffer, not a copy:
 // a copy of a million-move timeline took a second, while the unused tail of a buffer was
@@ -98,7 +102,7 @@ export class ModelBuilder {
       start: G(Float64Array, 3), end: G(Float64Array, 3), mend: G(Float64Array, 3), feed: G(Float32Array), mEvent: G(Uint32Array),
       vFirst: G(Uint32Array), arcOf: G(Int32Array), center: new Grow(Float64Array), plane: new Grow(Uint8Array),
       pathFirst: G(Uint32Array), path: new Grow(Float64Array), posEvent: new Grow(Int32Array), pos: new Grow(Float64Array),
-      vertices: G(Float32Array, 6), colors: G(Uint8Array, 6), vertexEvent: G(Float32Array, 2),
+      vertices: G(Float32Array, 6), colors: G(Uint8Array, 2 * RGBA), vertexEvent: G(Float32Array, 2),
     });
     this.pathFirst.push(0);
     this.min = [Infinity, Infinity, Infinity];
@@ -135,13 +139,13 @@ export class ModelBuilder {
   segment(p, i, q, j, col, ev) {
     const V = this.vertices, C = this.colors, E = this.vertexEvent;
     const va = V.a, ca = C.a, ea = E.a, lo = this.min, hi = this.max;
-    let vn = V.n;
+    let vn = V.n, cn = C.n;
     for (let k = 0; k < 2; k++) {
       const a = k ? q : p, o = k ? j : i;
       const x = this.lathe ? a[o + 2] : a[o], y = this.lathe ? 0 : a[o + 1], z = this.lathe ? a[o] / 2 : a[o + 2];
       va[vn] = x, va[vn + 1] = y, va[vn + 2] = z;
-      ca[vn] = col[0], ca[vn + 1] = col[1], ca[vn + 2] = col[2];
-      vn += 3;
+      ca[cn] = col[0], ca[cn + 1] = col[1], ca[cn + 2] = col[2], ca[cn + 3] = 255;
+      vn += 3, cn += RGBA;
       if (x < lo[0]) lo[0] = x;
       if (y < lo[1]) lo[1] = y;
       if (z < lo[2]) lo[2] = z;
@@ -150,7 +154,7 @@ export class ModelBuilder {
       if (z > hi[2]) hi[2] = z;
     }
     ea[E.n] = ev, ea[E.n + 1] = ev;
-    V.n = vn, C.n = vn, E.n += 2;
+    V.n = vn, C.n = cn, E.n += 2;
   }
 
   // One events frame. The columns the server sends are appended whole; the per-move columns
@@ -169,7 +173,7 @@ export class ModelBuilder {
     const start = this.start.a, end = this.end.a, mEvent = this.mEvent.a, vFirst = this.vFirst.a, arcOf = this.arcOf.a;
     const pathFirst = this.pathFirst.a, lastMove = this.lastMove.a, vEnd = this.vEnd.a;
     const V = this.vertices, C = this.colors, E = this.vertexEvent;
-    V.room(m * 6), C.room(m * 6), E.room(m * 2); // a segment a move; arcs and dog-legs ask for more
+    V.room(m * 6), C.room(m * 2 * RGBA), E.room(m * 2); // a segment a move; arcs and dog-legs ask for more
     let mi = 0, si = 0, pi = 0, arcs = this.plane.n - b.plane.length, paths = this.path.n / A - b.path.length / A;
     for (let i = 0; i < n; i++) {
       const k = b.kind[i], f = b.flags[i], ev = e0 + i;
@@ -191,7 +195,8 @@ export class ModelBuilder {
           this.segment(start, mv * A, end, mv * A, col, ev);
         } else {
           const pts = pointsOf(this.moveRecord(mv), this.lathe);
-          V.room((m - mi + pts.length) * 6), C.room((m - mi + pts.length) * 6), E.room((m - mi + pts.length) * 2);
+          const more = m - mi + pts.length;
+          V.room(more * 6), C.room(more * 2 * RGBA), E.room(more * 2);
           for (let j = 1; j < pts.length; j++) this.segment(pts[j - 1], 0, pts[j], 0, col, ev);
         }
         lastMove[ev] = mv;

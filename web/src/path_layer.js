@@ -17,7 +17,7 @@ attribute float eventIndex;
 varying vec3 vColor;
 varying float vIndex;
 void main() {
-  vColor = color;
+  vColor = color.rgb;
   vIndex = eventIndex;
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }`;
@@ -76,7 +76,7 @@ export class PathLayer {
   setCoarse(path) {
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(path.vertices, 3));
-    g.setAttribute('color', new THREE.BufferAttribute(path.colors, 3, true));
+    g.setAttribute('color', new THREE.BufferAttribute(path.colors, 4, true));
     g.setAttribute('eventIndex', new THREE.BufferAttribute(path.vertexEvent, 1));
     this.coarse = new THREE.LineSegments(g, this.material);
     this.coarse.frustumCulled = false;
@@ -86,16 +86,13 @@ export class PathLayer {
     this.setColours(this.lines.geometry.getAttribute('color').array);
   }
 
-  // rgb: the full path's new vertex colours (already in its attribute); the coarse copy takes
+  // rgb: the full path's new vertex colours (RGBA) (already in its attribute); the coarse copy takes
   // those of the vertices it stands for.
   setColours(rgb) {
     this.dirty = true;
     if (!this.coarse) return;
     const attr = this.coarse.geometry.getAttribute('color'), c = attr.array, src = this.coarseSource;
-    for (let k = 0; k < src.length; k++) {
-      const v = 3 * src[k];
-      c[3 * k] = rgb[v], c[3 * k + 1] = rgb[v + 1], c[3 * k + 2] = rgb[v + 2];
-    }
+    for (let k = 0; k < src.length; k++) c.set(rgb.subarray(4 * src[k], 4 * src[k] + 4), 4 * k);
     attr.needsUpdate = true;
   }
 

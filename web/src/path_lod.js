@@ -2,9 +2,10 @@
 // software WebGL draws about a microsecond a segment, so a million-move path cost a second an
 // orbit frame. Runs of segments that join end to start in one colour are merged into one
 // segment while every point they drop stays within `tol` of it (scene units; the run worker
-// takes a fraction of the path's size, about a third of a pixel when the whole part is in
-// view). A run is at most MAX_RUN segments long, which bounds the work to a few tests a
+// takes a thousandth of the path's diagonal, about a pixel when the whole part is in view). A run is at most MAX_RUN segments long, which bounds the work to a few tests a
 // segment. When the camera stops, the full path is drawn again.
+import { RGBA } from './model.js'; // bytes of a vertex colour
+
 const MAX_RUN = 32;
 
 // Squared distance from point (px, py, pz) to the segment a-b.
@@ -19,7 +20,7 @@ function dist2(px, py, pz, ax, ay, az, bx, by, bz) {
 }
 
 // path: {vertices (Float32Array, x y z a vertex, two a segment), colors (Uint8Array, r g b a
-// vertex), vertexEvent (Float32Array, a vertex)}. Returns the same three arrays for the merged
+// a vertex), vertexEvent (Float32Array, a vertex)}. Returns the same three arrays for the merged
 // segments and `source`: for each of their vertices, the vertex of the full path it stands for
 // (a new colouring of the full path is copied over through it).
 export function coarsePath(path, tol) {
@@ -31,7 +32,7 @@ export function coarsePath(path, tol) {
     // From the start of segment a to the end of segment b.
     for (const v of [2 * a, 2 * b + 1]) {
       out.vertices[3 * n] = V[3 * v], out.vertices[3 * n + 1] = V[3 * v + 1], out.vertices[3 * n + 2] = V[3 * v + 2];
-      out.colors[3 * n] = C[3 * v], out.colors[3 * n + 1] = C[3 * v + 1], out.colors[3 * n + 2] = C[3 * v + 2];
+      out.colors.set(C.subarray(RGBA * v, RGBA * v + RGBA), RGBA * n);
       out.vertexEvent[n] = E[v];
       out.source[n++] = v;
     }
@@ -39,7 +40,8 @@ export function coarsePath(path, tol) {
   // Does segment s join the one before it (same point, same colour)?
   const joins = (s) => {
     const p = 6 * s - 3, q = 6 * s; // the end of s-1, the start of s
-    return V[p] === V[q] && V[p + 1] === V[q + 1] && V[p + 2] === V[q + 2] && C[p] === C[q] && C[p + 1] === C[q + 1] && C[p + 2] === C[q + 2];
+    const c = 2 * RGBA * s - RGBA, d = 2 * RGBA * s;
+    return V[p] === V[q] && V[p + 1] === V[q + 1] && V[p + 2] === V[q + 2] && C[c] === C[d] && C[c + 1] === C[d + 1] && C[c + 2] === C[d + 2];
   };
   let first = 0; // the run's first segment
   for (let s = 1; s <= segs; s++) {
@@ -57,5 +59,5 @@ export function coarsePath(path, tol) {
       first = s;
     }
   }
-  return { vertices: out.vertices.slice(0, 3 * n), colors: out.colors.slice(0, 3 * n), vertexEvent: out.vertexEvent.slice(0, n), source: out.source.slice(0, n) };
+  return { vertices: out.vertices.slice(0, 3 * n), colors: out.colors.slice(0, RGBA * n), vertexEvent: out.vertexEvent.slice(0, n), source: out.source.slice(0, n) };
 }

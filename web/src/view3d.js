@@ -118,7 +118,7 @@ export class View3D {
     // uploaded once, drawn as a layer (path_layer.js); else what is done is drawn bright, what
     // is to come dim: two draw ranges of the same attributes.
     const position = new THREE.BufferAttribute(model.vertices, 3);
-    const color = new THREE.BufferAttribute(model.colors, 3, true);
+    const color = new THREE.BufferAttribute(model.colors, 4, true); // RGBA (model.js)
     this.paths = {};
     if (PathLayer.supported(this.renderer)) {
       this.pathGeometry = new THREE.BufferGeometry();

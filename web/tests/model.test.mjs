@@ -128,7 +128,7 @@ function segments(list) {
   const vertices = [], colors = [], vertexEvent = [];
   list.forEach(([a, b, col, ev]) => {
     vertices.push(...a, ...b);
-    colors.push(...col, ...col);
+    colors.push(...col, 255, ...col, 255);
     vertexEvent.push(ev, ev);
   });
   return { vertices: Float32Array.from(vertices), colors: Uint8Array.from(colors), vertexEvent: Float32Array.from(vertexEvent) };
@@ -155,6 +155,6 @@ test('the coarse path merges joined segments of one colour within the tolerance,
   ];
   const b = coarsePath(segments(broken), 0.01);
   assert.deepEqual(Array.from(b.vertexEvent), [0, 0, 1, 1, 2, 3, 4, 4]);
-  assert.deepEqual(Array.from(b.colors.subarray(0, 6)), [...blue, ...blue]);
+  assert.deepEqual(Array.from(b.colors.subarray(0, 8)), [...blue, 255, ...blue, 255]);
   assert.equal(coarsePath(segments([]), 0.01).vertices.length, 0);
 });
