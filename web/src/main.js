@@ -245,11 +245,10 @@ document.addEventListener('keydown', (e) => {
 });
 
 (async () => {
-  const inf = await api.info();
+  // The three answers at once: one after the other they were a third of opening the page.
+  const [inf, , draft] = await Promise.all([api.info(), loadFiles(), workspace.draft()]);
   if (inf.setup) $('setup-text').placeholder = `# empty: the server's --setup ${inf.setup_name}`;
-  await loadFiles();
   renderVariables($('p-vars'), null);
-  const draft = await workspace.draft();
   const started = (s) => inf.start && s?.kind === 'server' && s.root === inf.start.root && s.path === inf.start.path;
   if (draft?.source && (draft.text !== null || draft.source.kind !== 'new') && (!inf.start || started(draft.source))) await restore(draft);
   else if (inf.start) await openFile(inf.start.root, inf.start.path);
