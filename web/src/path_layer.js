@@ -72,9 +72,11 @@ export class PathLayer {
     this.coarseShown = false; // the layer holds the coarse copy's drawing
   }
 
-  // path: coarsePath()'s arrays. Its colours follow the full path's (setColours).
-  setCoarse(path) {
+  // path: coarsePath()'s arrays; sphere: the full path's bounding sphere. Its colours follow
+  // the full path's (setColours).
+  setCoarse(path, sphere) {
     const g = new THREE.BufferGeometry();
+    g.boundingSphere = sphere;
     g.setAttribute('position', new THREE.BufferAttribute(path.vertices, 3));
     g.setAttribute('color', new THREE.BufferAttribute(path.colors, 4, true));
     g.setAttribute('eventIndex', new THREE.BufferAttribute(path.vertexEvent, 1));

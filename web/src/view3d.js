@@ -125,8 +125,11 @@ export class View3D {
       this.pathGeometry.setAttribute('position', position);
       this.pathGeometry.setAttribute('color', color);
       this.pathGeometry.setAttribute('eventIndex', new THREE.BufferAttribute(model.vertexEvent, 1));
+      // Given, not computed: three.js sorts what it draws by distance and would otherwise go
+      // through every vertex for it (0.2 s at a million moves).
+      this.pathGeometry.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
       this.layer = new PathLayer(this.pathGeometry);
-      model.coarse?.then((path) => this.setCoarse(model, path));
+      model.coarse?.then((path) => this.setCoarse(model, path, this.pathGeometry.boundingSphere));
       delete this.host.dataset.coarse;
     }
     for (const done of this.layer ? [] : [true, false]) {
@@ -245,9 +248,9 @@ export class View3D {
   }
 
   // The path's coarse copy (run.worker.js), when it comes for the model still shown.
-  setCoarse(model, path) {
+  setCoarse(model, path, sphere) {
     if (this.model !== model || !this.layer) return;
-    this.layer.setCoarse(path);
+    this.layer.setCoarse(path, sphere);
     this.host.dataset.coarse = String(path.vertices.length / 6);
   }
 
