@@ -37,8 +37,8 @@ export function run(req, onProgress = () => {}, expect = 0) {
       stop();
       resolve(v);
     };
-    // After the model, the worker makes the path's coarse copy (run.worker.js): model.coarse
-    // resolves to it (never when a new run stops the worker first).
+    // After the model, the worker makes the path's coarse copy when asked (run.worker.js):
+    // model.coarse() asks and resolves to it (never when a new run stops the worker first).
     let coarse = null;
     worker.onmessage = (e) => {
       const d = e.data;
@@ -47,7 +47,11 @@ export function run(req, onProgress = () => {}, expect = 0) {
       else if (d.type === 'done' && !d.model.answer.ok) end({ ok: false, error: d.model.answer.error });
       else if (d.type === 'done') {
         const model = withViews(d.model);
-        model.coarse = new Promise((r) => (coarse = r));
+        const made = new Promise((r) => (coarse = r));
+        model.coarse = () => {
+          worker.postMessage({ coarse: true });
+          return made;
+        };
         resolve({ ok: true, model });
       } else if (d.type === 'coarse') {
         stop();

@@ -129,7 +129,10 @@ export class View3D {
       // through every vertex for it (0.2 s at a million moves).
       this.pathGeometry.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
       this.layer = new PathLayer(this.pathGeometry);
-      model.coarse?.then((path) => this.setCoarse(model, path, this.pathGeometry.boundingSphere));
+      // The coarse copy is asked for after the first frame with the whole path, which it
+      // would otherwise slow down.
+      const sphere = this.pathGeometry.boundingSphere;
+      requestAnimationFrame(() => setTimeout(() => this.model === model && model.coarse?.().then((path) => this.setCoarse(model, path, sphere))));
       delete this.host.dataset.coarse;
     }
     for (const done of this.layer ? [] : [true, false]) {
