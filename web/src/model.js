@@ -48,11 +48,16 @@ class Grow {
 
 // Chord points of an arc, work coordinates: within `tol` of the circle (program units), at
 // least 4 and at most 96 a full turn. Lathe X is a diameter: the arc is round in radius.
-function arcPoints(s, t, c, plane, cw, lathe, tol = 0.001) {
+// The start, end and centre are read at offsets si, ti, ci of s, t and c (A axes); each point
+// j = 0..n goes to emit(p, j), p one of two scratch arrays that take turns (copy it to keep
+// it): the run worker writes them straight into its buffers, as an array a point made the
+// 100,000 arcs of a million-line CAM program cost the collector half a second.
+const scratch = [new Float64Array(6), new Float64Array(6)];
+function arcChords(s, si, t, ti, c, ci, A, plane, cw, lathe, emit, tol = 0.001) {
   const [ui, vi] = plane === 18 ? [2, 0] : plane === 19 ? [1, 2] : [0, 1];
   const k = (i) => (lathe && i === 0 ? 0.5 : 1);
-  const su = s[ui] * k(ui), sv = s[vi] * k(vi), tu = t[ui] * k(ui), tv = t[vi] * k(vi);
-  const cu = c[ui] * k(ui), cv = c[vi] * k(vi);
+  const su = s[si + ui] * k(ui), sv = s[si + vi] * k(vi), tu = t[ti + ui] * k(ui), tv = t[ti + vi] * k(vi);
+  const cu = c[ci + ui] * k(ui), cv = c[ci + vi] * k(vi);
   const a0 = Math.atan2(sv - cv, su - cu);
   const a1 = Math.atan2(tv - cv, tu - cu);
   let sweep = a1 - a0;
@@ -64,15 +69,20 @@ function arcPoints(s, t, c, plane, cw, lathe, tol = 0.001) {
   const step = tol < r ? 2 * Math.acos(1 - tol / r) : Math.PI / 2;
   const turns = Math.abs(sweep) / (2 * Math.PI);
   const n = Math.max(4, Math.min(Math.ceil(Math.abs(sweep) / step), Math.ceil(turns * 96)));
-  const pts = [];
   for (let j = 0; j <= n; j++) {
     const f = j / n, a = a0 + sweep * f, rr = r0 + (r1 - r0) * f;
-    const p = s.slice();
-    for (let i = 0; i < p.length; i++) p[i] = s[i] + (t[i] - s[i]) * f; // helix and other axes: linear
+    const p = scratch[j & 1];
+    for (let i = 0; i < A; i++) p[i] = s[si + i] + (t[ti + i] - s[si + i]) * f; // helix and other axes: linear
     p[ui] = (cu + rr * Math.cos(a)) / k(ui);
     p[vi] = (cv + rr * Math.sin(a)) / k(vi);
-    pts.push(p);
+    emit(p, j);
   }
+}
+
+// arcChords as arrays of points.
+function arcPoints(s, t, c, plane, cw, lathe) {
+  const pts = [];
+  arcChords(s, 0, t, 0, c, 0, s.length, plane, cw, lathe, (p) => pts.push(Array.from(p.subarray(0, s.length))));
   return pts;
 }
 
@@ -193,6 +203,14 @@ export class ModelBuilder {
         } else arcOf[mv] = -1;
         if (!(f & FLAG.arc) && corners === 0) {
           this.segment(start, mv * A, end, mv * A, col, ev);
+        } else if (corners === 0) {
+          // An arc: its chords into the buffers, room made for them and the moves after.
+          const a = arcOf[mv], rest = m - mi;
+          arcChords(start, mv * A, end, mv * A, this.center.a, a * 3, A, this.plane.a[a], k === KIND.cw, this.lathe, (p, j) => {
+            if (j === 0) return;
+            V.room((rest + 1) * 6), C.room((rest + 1) * 2 * RGBA), E.room((rest + 1) * 2);
+            this.segment(scratch[(j - 1) & 1], 0, p, 0, col, ev);
+          });
         } else {
           const pts = pointsOf(this.moveRecord(mv), this.lathe);
           const more = m - mi + pts.length;
