@@ -88,8 +88,8 @@ export class PathLayer {
     this.setColours(this.lines.geometry.getAttribute('color').array);
   }
 
-  // rgb: the full path's new vertex colours (RGBA) (already in its attribute); the coarse copy takes
-  // those of the vertices it stands for.
+  // rgb: the full path's new vertex colours (RGBA, already in its attribute); the coarse copy
+  // takes those of the vertices it stands for.
   setColours(rgb) {
     this.dirty = true;
     if (!this.coarse) return;

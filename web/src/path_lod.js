@@ -2,8 +2,9 @@
 // software WebGL draws about a microsecond a segment, so a million-move path cost a second an
 // orbit frame. Runs of segments that join end to start in one colour are merged into one
 // segment while every point they drop stays within `tol` of it (scene units; the run worker
-// takes a thousandth of the path's diagonal, about a pixel when the whole part is in view). A run is at most MAX_RUN segments long, which bounds the work to a few tests a
-// segment. When the camera stops, the full path is drawn again.
+// takes a thousandth of the path's diagonal, about a pixel when the whole part is in view).
+// A run is at most MAX_RUN segments long, which bounds the work to a few tests a segment.
+// When the camera stops, the full path is drawn again.
 import { RGBA } from './model.js'; // bytes of a vertex colour
 
 const MAX_RUN = 32;
@@ -19,8 +20,8 @@ function dist2(px, py, pz, ax, ay, az, bx, by, bz) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-// path: {vertices (Float32Array, x y z a vertex, two a segment), colors (Uint8Array, r g b a
-// a vertex), vertexEvent (Float32Array, a vertex)}. Returns the same three arrays for the merged
+// path: {vertices (Float32Array, x y z a vertex, two a segment), colors (Uint8Array, RGBA a
+// vertex), vertexEvent (Float32Array, a vertex)}. Returns the same three arrays for the merged
 // segments and `source`: for each of their vertices, the vertex of the full path it stands for
 // (a new colouring of the full path is copied over through it).
 export function coarsePath(path, tol) {

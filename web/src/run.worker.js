@@ -61,7 +61,7 @@ async function run({ url, request, expect }) {
   }
 }
 
-// Merged segments stay within a thousandth of the path's diagonal of the full path: about a
+// The coarse copy stays within a thousandth of the path's diagonal of the full path: about a
 // pixel when the whole part is in view (1600 x 1000).
 function coarseTolerance(bounds) {
   if (!bounds) return 0;
