@@ -85,13 +85,18 @@ export class PathLayer {
     this.coarse.visible = false;
     this.scene.add(this.coarse);
     this.coarseSource = path.source;
-    this.setColours(this.lines.geometry.getAttribute('color').array);
+    this.coarseColours(this.lines.geometry.getAttribute('color').array); // the layer stays as drawn
   }
 
-  // rgb: the full path's new vertex colours (RGBA, already in its attribute); the coarse copy
-  // takes those of the vertices it stands for.
+  // rgb: the full path's new vertex colours (RGBA, already in its attribute): the layer is
+  // drawn again.
   setColours(rgb) {
     this.dirty = true;
+    this.coarseColours(rgb);
+  }
+
+  // The coarse copy takes the colours of the vertices it stands for.
+  coarseColours(rgb) {
     if (!this.coarse) return;
     const attr = this.coarse.geometry.getAttribute('color'), c = attr.array, src = this.coarseSource;
     for (let k = 0; k < src.length; k++) c.set(rgb.subarray(4 * src[k], 4 * src[k] + 4), 4 * k);
