@@ -1,5 +1,7 @@
 #include "server/state_diff.hpp"
 
+#include <cstring>
+
 #include "app/machine_state.hpp"
 #include "app/session.hpp"
 
@@ -30,7 +32,28 @@ bool sameModal(const ModalState& a, const ModalState& b) {
          a.lastM == b.lastM && a.workP == b.workP && a.unit == b.unit;
 }
 
+// The modal state's JSON (modalJson) differs only in the G code groups.
+bool onlyGroupsDiffer(const ModalState& a, const ModalState& b) {
+  return a.feed == b.feed && a.speed == b.speed && a.tool == b.tool && a.dOffset == b.dOffset &&
+         a.hOffset == b.hOffset && a.unit == b.unit;
+}
+
 }  // namespace
+
+template <size_t N>
+void StateDiff::compareAll(nlohmann::json& step, const char* key, int first,
+                           const std::array<Value, N>& now, Value* was) {
+  // Most events change no variable: one memcmp of the array says so. The copy kept is the
+  // control's array byte for byte (padding included), so that an unchanged array compares
+  // equal; a difference in padding only finds no change below and is copied over too.
+  if (!first_ && std::memcmp(now.data(), was, N * sizeof(Value)) == 0) return;
+  for (size_t k = 0; k < N; ++k) {
+    const Value& v = now[k];
+    if (v.null != was[k].null || (!v.null && v.v != was[k].v) || first_)
+      changed(step, key, first + static_cast<int>(k), v, was[k]);
+  }
+  std::memcpy(was, now.data(), N * sizeof(Value));
+}
 
 StateDiff::StateDiff(const Setup& setup, bool positionsApart)
     : setup_(setup),
@@ -56,13 +79,9 @@ nlohmann::json StateDiff::next(bool offsetsChanged) {
   };
   // Variables are compared with what was last read (a vacant one and 0 differ); only what
   // changed goes into the delta. The arrays are read directly: this runs after every event.
-  const auto& locals = exec_->currentLocals();
-  for (size_t k = 0; k < 33; ++k) compare("l", static_cast<int>(k + 1), locals[k], locals_[k]);
-  const auto& c100 = exec_->common100();
-  for (size_t k = 0; k < 100; ++k) compare("c", static_cast<int>(k + 100), c100[k], common_[k]);
-  const auto& c500 = exec_->memory().common500;
-  for (size_t k = 0; k < 500; ++k)
-    compare("c", static_cast<int>(k + 500), c500[k], common_[100 + k]);
+  compareAll(step, "l", 1, exec_->currentLocals(), locals_.data());
+  compareAll(step, "c", 100, exec_->common100(), common_.data());
+  compareAll(step, "c", 500, exec_->memory().common500, common_.data() + 100);
   // #4001-#4022 are the modal G codes: read only when the modal state changed.
   const ModalState& m = exec_->modal();
   const bool modalChanged = !haveModal_ || !sameModal(m, lastModal_);
@@ -91,7 +110,21 @@ nlohmann::json StateDiff::next(bool offsetsChanged) {
       }
   }
 
-  if (modalChanged) {
+  if (modalChanged && haveModal_ && onlyGroupsDiffer(m, lastModal_)) {
+    // A move of another kind (G01 after G02), a plane, a canned cycle: only the G code groups
+    // changed, and only those go into the delta, without building the modal JSON again
+    // (which cost a third of the server's time on a million-line CAM program).
+    nlohmann::json delta = nlohmann::json::object();
+    for (size_t g = 1; g < static_cast<size_t>(kGroups); ++g) {
+      if (m.g[g] == lastModal_.g[g]) continue;
+      auto entry = modal_.find(std::to_string(g));
+      if (entry == modal_.end()) continue;  // a group this series does not have
+      *entry = m.g[g] / 10.0;
+      delta[entry.key()] = *entry;
+    }
+    if (!delta.empty()) step["m"] = std::move(delta);
+    lastModal_ = m;
+  } else if (modalChanged) {
     // The first time the whole modal state, then only the entries that changed.
     nlohmann::json full = modalJson(m, setup_);
     nlohmann::json delta = nlohmann::json::object();

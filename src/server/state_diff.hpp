@@ -45,6 +45,10 @@ class StateDiff {
   std::vector<int> system_numbers_;
   // Adds "#number": now to step[key] (a change from `was`, which becomes now).
   void changed(nlohmann::json& step, const char* key, int number, const Value& now, Value& was);
+  // changed() for each variable of `now` (numbered from `first`) that differs from was[].
+  template <size_t N>
+  void compareAll(nlohmann::json& step, const char* key, int first, const std::array<Value, N>& now,
+                  Value* was);
 
   // Locals, common (#100-#199, #500-#999) and system variables as last read.
   std::array<Value, 33> locals_{};

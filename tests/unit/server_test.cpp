@@ -155,6 +155,24 @@ TEST(RunJob, TraceAndStepsLineForLine) {
   EXPECT_EQ(r["machine"]["kind"], "mill");
 }
 
+// The deltas the viewer folds (state_diff.cpp): a change of move kind alone gives only its G
+// code group, a change of feed with it gives both, a variable written again with the same
+// value gives nothing, and a variable changed after events that changed none is seen.
+TEST(RunJob, StepsHoldWhatChangedAndNothingElse) {
+  json r = runJob({{"program",
+                    "O0001\nG90 G01 X1. F100.\nG02 X2. R0.5\nG01 X3. F200.\n#100=7\n#100=7\n"
+                    "G01 X4.\nX5.\n#501=2\nX6.\nM30\n"},
+                   {"name", "t.nc"}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  const json& st = r["steps"];
+  ASSERT_EQ(st.size(), 6u) << st.dump();
+  EXPECT_EQ(st[1]["m"], (json{{"1", 2.0}})) << st[1];                // G02 only
+  EXPECT_EQ(st[2]["m"], (json{{"1", 1.0}, {"F", 200.0}})) << st[2];  // G01 and F200.
+  EXPECT_EQ(st[3]["c"], (json{{"#100", 7.0}})) << st[3];             // #100 once
+  EXPECT_TRUE(st[4].is_null() || !st[4].contains("c")) << st[4];
+  EXPECT_EQ(st[5]["c"], (json{{"#501", 2.0}})) << st[5];
+}
+
 // The page sends the editor's text with the name and folder of the file it came from: that
 // file is the text, not a second copy of its programs ("O0202 is also in ..."), while the
 // folder's other files still give the subprograms.

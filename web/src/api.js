@@ -30,16 +30,34 @@ export function run(req, onProgress = () => {}, expect = 0) {
   const worker = new Worker(new URL('./run.worker.js', import.meta.url), { type: 'module' });
   current = worker;
   return new Promise((resolve) => {
-    const end = (v) => {
+    const stop = () => {
       worker.terminate();
       if (current === worker) current = null;
+    };
+    const end = (v) => {
+      stop();
       resolve(v);
     };
+    // After the model, the worker makes the path's coarse copy when asked (run.worker.js):
+    // model.coarse() asks and resolves to it (never when a new run stops the worker first).
+    let coarse = null;
     worker.onmessage = (e) => {
       const d = e.data;
       if (d.type === 'progress') onProgress(d);
       else if (d.type === 'error') end({ ok: false, error: d.error, status: d.status });
-      else if (d.type === 'done') end(d.model.answer.ok ? { ok: true, model: withViews(d.model) } : { ok: false, error: d.model.answer.error });
+      else if (d.type === 'done' && !d.model.answer.ok) end({ ok: false, error: d.model.answer.error });
+      else if (d.type === 'done') {
+        const model = withViews(d.model);
+        const made = new Promise((r) => (coarse = r));
+        model.coarse = () => {
+          worker.postMessage({ coarse: true });
+          return made;
+        };
+        resolve({ ok: true, model });
+      } else if (d.type === 'coarse') {
+        stop();
+        coarse(d.path);
+      }
     };
     worker.onerror = (e) => end({ ok: false, error: `the run worker failed: ${e.message}` });
     worker.postMessage({ url: new URL('api/run.bin', location.href).href, request: req, expect });

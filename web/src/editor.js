@@ -94,6 +94,13 @@ export class Editor {
     this.view.setState(this.newState(t));
   }
 
+  // The document as an object that is replaced by every edit (CodeMirror's are immutable):
+  // the same object means the same text, found without building the text (0.4-0.6 s for a
+  // million lines).
+  get doc() {
+    return this.view.state.doc;
+  }
+
   get lineCount() {
     return this.view.state.doc.lines;
   }

@@ -23,7 +23,14 @@ export function lineIndex(model, file) {
   const n = model.moves;
   const lineOf = new Int32Array(n);
   let maxLine = 0;
-  for (let i = 0; i < n; i++) maxLine = Math.max(maxLine, (lineOf[i] = moveLine(model, i, file)));
+  // moveLine() for every move, the file compared by its number (a million moves).
+  const id = file ? (model.answer.files || []).indexOf(file) : -1;
+  for (let i = 0; i < n; i++) {
+    const e = model.mEvent[i];
+    const line = !file || model.file[e] === id ? model.line[e] : 0;
+    lineOf[i] = line;
+    if (line > maxLine) maxLine = line;
+  }
   const start = new Int32Array(maxLine + 2);
   for (let i = 0; i < n; i++) if (lineOf[i]) start[lineOf[i] + 1]++;
   for (let l = 1; l < start.length; l++) start[l] += start[l - 1];

@@ -76,7 +76,7 @@ async function openFile(root, path) {
   if (!f.ok) return setStatus(f.error, 'bad');
   editor.text = f.text;
   $('setup-text').value = f.setup || '';
-  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text, setup: f.setup || '' };
+  ui.source = { kind: 'server', root, path, dir: f.dir, name: path.split('/').pop(), text: f.text, doc: editor.doc, setup: f.setup || '' };
   $('files').value = `${root}|${path}`;
   workspace.opened(sourceKey());
   setStatus(`${path}${f.setup_path ? ` (setup ${f.setup_path})` : ''}`);
@@ -134,10 +134,13 @@ editor.onChange = () => {
 async function run() {
   setStatus('running...', 'busy');
   $('run').disabled = true;
-  const text = editor.text;
   const req = { name: ui.source.name };
   // A file of the server's folders, unchanged, runs by its path: its text is not sent back.
-  const unchanged = ui.source.kind === 'server' && ui.source.text === text;
+  // The editor's document still the one the file was loaded into is unchanged without a
+  // look at its text.
+  const same = ui.source.kind === 'server' && ui.source.doc === editor.doc;
+  const text = same ? null : editor.text;
+  const unchanged = ui.source.kind === 'server' && (same || ui.source.text === text);
   if (unchanged) Object.assign(req, { root: ui.source.root, path: ui.source.path });
   else req.program = text;
   // The setup tab's text when it is one of the user's; a program of the server's folders with
@@ -256,12 +259,11 @@ document.addEventListener('keydown', (e) => {
 });
 
 (async () => {
-  const inf = await api.info();
+  // The three answers at once: one after the other they were a third of opening the page.
+  const [inf, , draft] = await Promise.all([api.info(), loadFiles(), workspace.draft()]);
   if (inf.setup) $('setup-text').placeholder = `# empty: the server's --setup ${inf.setup_name}`;
-  await loadFiles();
   api.setups().then((l) => setupLayers.setFiles(l));
   renderVariables($('p-vars'), null);
-  const draft = await workspace.draft();
   const started = (s) => inf.start && s?.kind === 'server' && s.root === inf.start.root && s.path === inf.start.path;
   if (draft?.source && (draft.text !== null || draft.source.kind !== 'new') && (!inf.start || started(draft.source))) await restore(draft);
   else if (inf.start) await openFile(inf.start.root, inf.start.path);

@@ -1,6 +1,6 @@
 // The run answer as a timeline, built once (in the run worker, run.worker.js) from the binary
 // frames of wire.js into typed arrays: the events' columns, each move's end points, the
-// toolpath as one vertex buffer with a colour per vertex, and for each event the number of
+// toolpath as one vertex buffer with a colour per vertex (RGBA, see RGBA below), and for each event the number of
 // vertices drawn once it is done (the view shows the timeline as a draw range of that
 // buffer). The control's state at an event is folded from sparse deltas on demand, from
 // checkpoints, so that nothing is rebuilt per scrub or step.
@@ -10,6 +10,10 @@ import { fixOnMachine } from './machine_frame.js';
 const AXES = ['X', 'Y', 'Z', 'A', 'B', 'C'];
 export const COLORS = { rapid: [0xff, 0x55, 0x33], feed: [0x33, 0xcc, 0xff], comp: [0xdd, 0x55, 0xff], thread: [0xff, 0xdd, 0x33] };
 const CHECKPOINT = 64; // steps between full states
+// Bytes of a vertex colour: R, G, B and an opaque alpha. Three bytes a vertex made ANGLE
+// convert the whole buffer to four on the CPU before SwiftShader drew it (bench/viewer: the
+// GPU process's CPU time to the first frame of a million moves 1.6 s -> 0.75 s).
+export const RGBA = 4;
 
 // A typed array that grows by doubling. done() hands out a view of its buffer, not a copy:
 // a copy of a million-move timeline took a second, while the unused tail of a buffer was
@@ -44,11 +48,16 @@ class Grow {
 
 // Chord points of an arc, work coordinates: within `tol` of the circle (program units), at
 // least 4 and at most 96 a full turn. Lathe X is a diameter: the arc is round in radius.
-function arcPoints(s, t, c, plane, cw, lathe, tol = 0.001) {
+// The start, end and centre are read at offsets si, ti, ci of s, t and c (A axes); each point
+// j = 0..n goes to emit(p, j), p one of two scratch arrays that take turns (copy it to keep
+// it): the run worker writes them straight into its buffers, as an array a point made the
+// 100,000 arcs of a million-line CAM program cost the collector half a second.
+const scratch = [new Float64Array(6), new Float64Array(6)];
+function arcChords(s, si, t, ti, c, ci, A, plane, cw, lathe, emit, tol = 0.001) {
   const [ui, vi] = plane === 18 ? [2, 0] : plane === 19 ? [1, 2] : [0, 1];
   const k = (i) => (lathe && i === 0 ? 0.5 : 1);
-  const su = s[ui] * k(ui), sv = s[vi] * k(vi), tu = t[ui] * k(ui), tv = t[vi] * k(vi);
-  const cu = c[ui] * k(ui), cv = c[vi] * k(vi);
+  const su = s[si + ui] * k(ui), sv = s[si + vi] * k(vi), tu = t[ti + ui] * k(ui), tv = t[ti + vi] * k(vi);
+  const cu = c[ci + ui] * k(ui), cv = c[ci + vi] * k(vi);
   const a0 = Math.atan2(sv - cv, su - cu);
   const a1 = Math.atan2(tv - cv, tu - cu);
   let sweep = a1 - a0;
@@ -60,15 +69,20 @@ function arcPoints(s, t, c, plane, cw, lathe, tol = 0.001) {
   const step = tol < r ? 2 * Math.acos(1 - tol / r) : Math.PI / 2;
   const turns = Math.abs(sweep) / (2 * Math.PI);
   const n = Math.max(4, Math.min(Math.ceil(Math.abs(sweep) / step), Math.ceil(turns * 96)));
-  const pts = [];
   for (let j = 0; j <= n; j++) {
     const f = j / n, a = a0 + sweep * f, rr = r0 + (r1 - r0) * f;
-    const p = s.slice();
-    for (let i = 0; i < p.length; i++) p[i] = s[i] + (t[i] - s[i]) * f; // helix and other axes: linear
+    const p = scratch[j & 1];
+    for (let i = 0; i < A; i++) p[i] = s[si + i] + (t[ti + i] - s[si + i]) * f; // helix and other axes: linear
     p[ui] = (cu + rr * Math.cos(a)) / k(ui);
     p[vi] = (cv + rr * Math.sin(a)) / k(vi);
-    pts.push(p);
+    emit(p, j);
   }
+}
+
+// arcChords as arrays of points.
+function arcPoints(s, t, c, plane, cw, lathe) {
+  const pts = [];
+  arcChords(s, 0, t, 0, c, 0, s.length, plane, cw, lathe, (p) => pts.push(Array.from(p.subarray(0, s.length))));
   return pts;
 }
 
@@ -98,7 +112,7 @@ export class ModelBuilder {
       start: G(Float64Array, 3), end: G(Float64Array, 3), mend: G(Float64Array, 3), feed: G(Float32Array), mEvent: G(Uint32Array),
       vFirst: G(Uint32Array), arcOf: G(Int32Array), center: new Grow(Float64Array), plane: new Grow(Uint8Array),
       pathFirst: G(Uint32Array), path: new Grow(Float64Array), posEvent: new Grow(Int32Array), pos: new Grow(Float64Array),
-      vertices: G(Float32Array, 6), colors: G(Uint8Array, 6), vertexEvent: G(Float32Array, 2),
+      vertices: G(Float32Array, 6), colors: G(Uint8Array, 2 * RGBA), vertexEvent: G(Float32Array, 2),
     });
     this.pathFirst.push(0);
     this.min = [Infinity, Infinity, Infinity];
@@ -137,13 +151,13 @@ export class ModelBuilder {
   segment(p, i, q, j, col, ev) {
     const V = this.vertices, C = this.colors, E = this.vertexEvent;
     const va = V.a, ca = C.a, ea = E.a, lo = this.min, hi = this.max;
-    let vn = V.n;
+    let vn = V.n, cn = C.n;
     for (let k = 0; k < 2; k++) {
       const a = k ? q : p, o = k ? j : i;
       const x = this.lathe ? a[o + 2] : a[o], y = this.lathe ? 0 : a[o + 1], z = this.lathe ? a[o] / 2 : a[o + 2];
       va[vn] = x, va[vn + 1] = y, va[vn + 2] = z;
-      ca[vn] = col[0], ca[vn + 1] = col[1], ca[vn + 2] = col[2];
-      vn += 3;
+      ca[cn] = col[0], ca[cn + 1] = col[1], ca[cn + 2] = col[2], ca[cn + 3] = 255;
+      vn += 3, cn += RGBA;
       if (x < lo[0]) lo[0] = x;
       if (y < lo[1]) lo[1] = y;
       if (z < lo[2]) lo[2] = z;
@@ -152,7 +166,7 @@ export class ModelBuilder {
       if (z > hi[2]) hi[2] = z;
     }
     ea[E.n] = ev, ea[E.n + 1] = ev;
-    V.n = vn, C.n = vn, E.n += 2;
+    V.n = vn, C.n = cn, E.n += 2;
   }
 
   // One events frame. The columns the server sends are appended whole; the per-move columns
@@ -171,7 +185,7 @@ export class ModelBuilder {
     const start = this.start.a, end = this.end.a, mEvent = this.mEvent.a, vFirst = this.vFirst.a, arcOf = this.arcOf.a;
     const pathFirst = this.pathFirst.a, lastMove = this.lastMove.a, vEnd = this.vEnd.a;
     const V = this.vertices, C = this.colors, E = this.vertexEvent;
-    V.room(m * 6), C.room(m * 6), E.room(m * 2); // a segment a move; arcs and dog-legs ask for more
+    V.room(m * 6), C.room(m * 2 * RGBA), E.room(m * 2); // a segment a move; arcs and dog-legs ask for more
     let mi = 0, si = 0, pi = 0, arcs = this.plane.n - b.plane.length, paths = this.path.n / A - b.path.length / A;
     for (let i = 0; i < n; i++) {
       const k = b.kind[i], f = b.flags[i], ev = e0 + i;
@@ -191,9 +205,18 @@ export class ModelBuilder {
         } else arcOf[mv] = -1;
         if (!(f & FLAG.arc) && corners === 0) {
           this.segment(start, mv * A, end, mv * A, col, ev);
+        } else if (corners === 0) {
+          // An arc: its chords into the buffers, room made for them and the moves after.
+          const a = arcOf[mv], rest = m - mi;
+          arcChords(start, mv * A, end, mv * A, this.center.a, a * 3, A, this.plane.a[a], k === KIND.cw, this.lathe, (p, j) => {
+            if (j === 0) return;
+            V.room((rest + 1) * 6), C.room((rest + 1) * 2 * RGBA), E.room((rest + 1) * 2);
+            this.segment(scratch[(j - 1) & 1], 0, p, 0, col, ev);
+          });
         } else {
           const pts = pointsOf(this.moveRecord(mv), this.lathe);
-          V.room((m - mi + pts.length) * 6), C.room((m - mi + pts.length) * 6), E.room((m - mi + pts.length) * 2);
+          const more = m - mi + pts.length;
+          V.room(more * 6), C.room(more * 2 * RGBA), E.room(more * 2);
           for (let j = 1; j < pts.length; j++) this.segment(pts[j - 1], 0, pts[j], 0, col, ev);
         }
         lastMove[ev] = mv;
@@ -252,7 +275,7 @@ export class ModelBuilder {
       vFirst: g(this.vFirst), arcOf: g(this.arcOf), center: g(this.center), plane: g(this.plane),
       pathFirst: g(this.pathFirst), path: g(this.path), posEvent: g(this.posEvent), pos: g(this.pos),
       vertices: g(this.vertices), colors: g(this.colors), vertexEvent: g(this.vertexEvent), bounds: box, shiftFrom: fixed.shiftFrom, shiftBy: fixed.shiftBy,
-      stepEvent: Int32Array.from(steps.map((s) => s[0])), stepDelta: steps.map((s) => s[1]), checkpoints,
+      stepEvent: Int32Array.from(steps.map((s) => s[0])), ...packDeltas(steps), checkpoints,
       notes, blockLast: blockEnds(this), stockShots: this.stockShots,
     };
   }
@@ -288,6 +311,24 @@ function blockEnds(b) {
     if (i === b.n - 1 || blk[i + 1] !== blk[i] || file[i + 1] !== file[i] || line[i + 1] !== line[i]) out.push(i);
   return out.done();
 }
+
+// The deltas as one block of JSON text, a delta a line, and where each starts (bytes): two
+// typed arrays handed over to the page without a copy. As 200,000 objects (a million-line
+// program changes the modal state every fifth move) they took a second to clone into the
+// page; a state is folded from at most CHECKPOINT of them, parsed when asked for.
+function packDeltas(steps) {
+  const text = steps.map((s) => JSON.stringify(s[1])).join('\n');
+  const stepText = new TextEncoder().encode(text);
+  const stepAt = new Uint32Array(steps.length + 1);
+  let k = 0;
+  for (let b = 0; b < stepText.length; b++) if (stepText[b] === 10) stepAt[++k] = b + 1;
+  stepAt[steps.length] = stepText.length + 1; // as if the last line ended with a newline too
+  return { stepText, stepAt };
+}
+
+const utf8 = new TextDecoder();
+// Delta k of the timeline (state_diff.hpp: {l, c, s, m, o}).
+export const stepDelta = (m, k) => JSON.parse(utf8.decode(m.stepText.subarray(m.stepAt[k], m.stepAt[k + 1] - 1)));
 
 const emptyState = () => ({ locals: {}, common: {}, system: {}, modal: {}, offsets: { work: {}, tool: {} } });
 const cloneState = (s) => ({ locals: { ...s.locals }, common: { ...s.common }, system: { ...s.system }, modal: { ...s.modal }, offsets: s.offsets });
@@ -331,7 +372,7 @@ export function stateAt(m, i) {
   else {
     const c = Math.floor(k / CHECKPOINT);
     st = cloneState(m.checkpoints[c]);
-    for (let j = c * CHECKPOINT; j <= k; j++) applyStep(st, m.stepDelta[j]);
+    for (let j = c * CHECKPOINT; j <= k; j++) applyStep(st, stepDelta(m, j));
   }
   const A = m.axes;
   const p = lastAtMost(m.posEvent, i);
@@ -347,7 +388,7 @@ export function stateAt(m, i) {
     }
   const changed = new Set();
   if (k >= 0 && m.stepEvent[k] === i) {
-    const d = m.stepDelta[k];
+    const d = stepDelta(m, k);
     for (const part of [d.l, d.c, d.s]) if (part) for (const key of Object.keys(part)) changed.add(key);
   }
   return { block: m.block[i], time: m.time[i], ...st, changed };

@@ -1,8 +1,8 @@
 // The colours of the toolpath's vertices by what the user wants to see: the kind of move (the
 // default: rapid, feed, compensated, threading), the feed rate, the depth or the tool. Each
-// mode gives one Uint8Array of RGB per vertex of the model's vertex buffer (model.js), made
+// mode gives one Uint8Array of RGBA per vertex of the model's vertex buffer (model.js), made
 // once when the mode changes, and a legend that says what the colours mean.
-import { COLORS, eventAt } from './model.js';
+import { COLORS, RGBA, eventAt } from './model.js';
 import { FLAG, KIND } from './wire.js';
 
 export const MODES = { kind: 'Move kind', feed: 'Feed rate', depth: 'Depth', tool: 'Tool' };
@@ -55,12 +55,19 @@ export function toolsOfMoves(m) {
   return tools;
 }
 
+// An RGBA buffer for n vertices, opaque.
+function opaque(n) {
+  const out = new Uint8Array(n * RGBA);
+  for (let k = 3; k < out.length; k += RGBA) out[k] = 255;
+  return out;
+}
+
 // Fills the vertices of each move with colourOf(mv) (an [r, g, b]).
 function perMove(m, colourOf) {
-  const out = new Uint8Array(m.vertices.length);
+  const out = opaque(m.vertices.length / 3);
   for (let mv = 0; mv < m.moves; mv++) {
     const c = colourOf(mv);
-    for (let v = m.vFirst[mv], e = vertexEnd(m, mv); v < e; v++) out.set(c, v * 3);
+    for (let v = m.vFirst[mv], e = vertexEnd(m, mv); v < e; v++) out.set(c, v * RGBA);
   }
   return out;
 }
@@ -77,7 +84,7 @@ function range(values) {
 const scaled = (v, [lo, hi]) => (hi > lo ? (v - lo) / (hi - lo) : 0.5);
 const fmt = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : Number(v.toFixed(3)).toString());
 
-// {colours: Uint8Array (RGB per vertex), legend: [{colour: '#rrggbb' or a CSS gradient, text}]}
+// {colours: Uint8Array (RGBA per vertex), legend: [{colour: '#rrggbb' or a CSS gradient, text}]}
 export function pathColours(m, mode) {
   if (mode === 'feed') {
     const feeds = [];
@@ -94,8 +101,8 @@ export function pathColours(m, mode) {
     const zs = new Float32Array(n);
     for (let k = 0; k < n; k++) zs[k] = v[k * 3 + 2];
     const r = range(zs);
-    const colours = new Uint8Array(v.length);
-    for (let k = 0; k < n; k++) colours.set(ramp(scaled(zs[k], r)), k * 3);
+    const colours = opaque(n);
+    for (let k = 0; k < n; k++) colours.set(ramp(scaled(zs[k], r)), k * RGBA);
     const axis = m.lathe ? 'X' : 'Z';
     const show = (z) => fmt(m.lathe ? z * 2 : z);
     const legend = r ? [{ gradient: true, text: `${axis} ${show(r[0])} … ${show(r[1])}` }] : [];

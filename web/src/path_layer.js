@@ -7,7 +7,9 @@
 // dim. That pass writes the layer's depth too, so the grid, the stock and the tool drawn after
 // it are hidden where the path is in front of them. Without float render targets (no
 // EXT_color_buffer_float) the view falls back to drawing the path itself, the timeline as
-// two draw ranges.
+// two draw ranges. While the camera moves (an orbit, a pan, a zoom) the layer is drawn from
+// the path's coarse copy when it has one (path_lod.js: about 30 times fewer segments at a
+// million moves); the view draws the full path again when the camera stops (view3d.js).
 import * as THREE from 'three';
 
 const PATH_VERTEX = /* glsl */ `
@@ -15,7 +17,7 @@ attribute float eventIndex;
 varying vec3 vColor;
 varying float vIndex;
 void main() {
-  vColor = color;
+  vColor = color.rgb;
   vIndex = eventIndex;
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }`;
@@ -66,14 +68,48 @@ export class PathLayer {
     this.quadCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
     this.dirty = true;
     this.lastCamera = new THREE.Matrix4();
+    this.coarse = null; // LineSegments of the coarse copy, once it came
+    this.coarseShown = false; // the layer holds the coarse copy's drawing
+  }
+
+  // path: coarsePath()'s arrays; sphere: the full path's bounding sphere. Its colours follow
+  // the full path's (setColours).
+  setCoarse(path, sphere) {
+    const g = new THREE.BufferGeometry();
+    g.boundingSphere = sphere;
+    g.setAttribute('position', new THREE.BufferAttribute(path.vertices, 3));
+    g.setAttribute('color', new THREE.BufferAttribute(path.colors, 4, true));
+    g.setAttribute('eventIndex', new THREE.BufferAttribute(path.vertexEvent, 1));
+    this.coarse = new THREE.LineSegments(g, this.material);
+    this.coarse.frustumCulled = false;
+    this.coarse.visible = false;
+    this.scene.add(this.coarse);
+    this.coarseSource = path.source;
+    this.coarseColours(this.lines.geometry.getAttribute('color').array); // the layer stays as drawn
+  }
+
+  // rgb: the full path's new vertex colours (RGBA, already in its attribute): the layer is
+  // drawn again.
+  setColours(rgb) {
+    this.dirty = true;
+    this.coarseColours(rgb);
+  }
+
+  // The coarse copy takes the colours of the vertices it stands for.
+  coarseColours(rgb) {
+    if (!this.coarse) return;
+    const attr = this.coarse.geometry.getAttribute('color'), c = attr.array, src = this.coarseSource;
+    for (let k = 0; k < src.length; k++) c.set(rgb.subarray(4 * src[k], 4 * src[k] + 4), 4 * k);
+    attr.needsUpdate = true;
   }
 
   setDone(events) {
     this.show.uniforms.done.value = events;
   }
 
-  // Draws the layer (again when the camera or the size changed), then puts it on the screen.
-  render(renderer, camera) {
+  // Draws the layer (again when the camera or the size changed), then puts it on the screen;
+  // moving: from the coarse copy, when there is one.
+  render(renderer, camera, moving = false) {
     const size = renderer.getDrawingBufferSize(new THREE.Vector2());
     if (this.target.width !== size.x || this.target.height !== size.y) {
       this.target.setSize(size.x, size.y);
@@ -88,6 +124,9 @@ export class PathLayer {
       renderer.setRenderTarget(this.target);
       renderer.setClearColor(0x000000, 0);
       renderer.clear();
+      this.coarseShown = moving && this.coarse !== null;
+      this.lines.visible = !this.coarseShown;
+      if (this.coarse) this.coarse.visible = this.coarseShown;
       renderer.render(this.scene, camera);
       renderer.setRenderTarget(null);
       renderer.setClearColor(clear, alpha);
@@ -102,5 +141,6 @@ export class PathLayer {
     this.material.dispose();
     this.show.dispose();
     this.quad.geometry.dispose();
+    this.coarse?.geometry.dispose();
   }
 }

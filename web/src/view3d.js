@@ -9,6 +9,10 @@ import { makeAxes } from './axes.js';
 import { PathLayer } from './path_layer.js';
 
 const BG = 0x15181d;
+// The full path again this long after the camera stopped: after the end of a drag or a wheel
+// turn, and while a drag holds still.
+const REFINE_AFTER_END_MS = 150;
+const REFINE_WHILE_STILL_MS = 500;
 
 // True when WebGL is drawn by the CPU (SwiftShader, llvmpipe): multisampling there cost a
 // third of every frame (bench/viewer: scrub 151 -> 94 ms, orbit 107 -> 78 ms at 43,000
@@ -33,7 +37,17 @@ export class View3D {
     this.camera = new THREE.PerspectiveCamera(40, 1, 0.1, 1e6);
     this.camera.up.set(0, 0, 1);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.addEventListener('change', () => this.draw());
+    // An orbit, pan or zoom by the user draws the path's coarse copy (path_layer.js), and the
+    // full path once the camera has stopped: at the end of the drag or wheel turn, or when a
+    // drag holds still. A camera set by the program (setView) is drawn in full at once.
+    this.interacting = false;
+    this.refineTimer = null;
+    this.controls.addEventListener('start', () => (this.interacting = true));
+    this.controls.addEventListener('change', () => (this.interacting ? this.cameraMoved() : this.draw()));
+    this.controls.addEventListener('end', () => {
+      this.interacting = false;
+      this.refineAfter(REFINE_AFTER_END_MS);
+    });
     this.scene.add(new THREE.AmbientLight(0xffffff, 0.7));
     const sun = new THREE.DirectionalLight(0xffffff, 0.8);
     sun.position.set(1, -2, 3);
@@ -104,14 +118,22 @@ export class View3D {
     // uploaded once, drawn as a layer (path_layer.js); else what is done is drawn bright, what
     // is to come dim: two draw ranges of the same attributes.
     const position = new THREE.BufferAttribute(model.vertices, 3);
-    const color = new THREE.BufferAttribute(model.colors, 3, true);
+    const color = new THREE.BufferAttribute(model.colors, 4, true); // RGBA (model.js)
     this.paths = {};
     if (PathLayer.supported(this.renderer)) {
       this.pathGeometry = new THREE.BufferGeometry();
       this.pathGeometry.setAttribute('position', position);
       this.pathGeometry.setAttribute('color', color);
       this.pathGeometry.setAttribute('eventIndex', new THREE.BufferAttribute(model.vertexEvent, 1));
+      // Given, not computed: three.js sorts what it draws by distance and would otherwise go
+      // through every vertex for it (0.2 s at a million moves).
+      this.pathGeometry.boundingSphere = box.getBoundingSphere(new THREE.Sphere());
       this.layer = new PathLayer(this.pathGeometry);
+      // The coarse copy is asked for after the first frame with the whole path, which it
+      // would otherwise slow down.
+      const sphere = this.pathGeometry.boundingSphere;
+      requestAnimationFrame(() => setTimeout(() => this.model === model && model.coarse?.().then((path) => this.setCoarse(model, path, sphere))));
+      delete this.host.dataset.coarse;
     }
     for (const done of this.layer ? [] : [true, false]) {
       const geo = new THREE.BufferGeometry();
@@ -184,7 +206,7 @@ export class View3D {
     const color = this.pathColourAttribute();
     color.array.set(rgb);
     color.needsUpdate = true;
-    if (this.layer) this.layer.dirty = true; // the layer keeps the path drawn for the camera
+    if (this.layer) this.layer.setColours(rgb); // the layer keeps the path drawn for the camera
     this.draw();
   }
 
@@ -213,6 +235,28 @@ export class View3D {
     this.draw();
   }
 
+  cameraMoved() {
+    this.draw(true);
+    this.refineAfter(REFINE_WHILE_STILL_MS);
+  }
+
+  refineAfter(ms) {
+    clearTimeout(this.refineTimer);
+    this.refineTimer = setTimeout(() => {
+      this.refineTimer = null;
+      if (!this.layer?.coarseShown) return;
+      this.layer.dirty = true;
+      this.draw();
+    }, ms);
+  }
+
+  // The path's coarse copy (run.worker.js), when it comes for the model still shown.
+  setCoarse(model, path, sphere) {
+    if (this.model !== model || !this.layer) return;
+    this.layer.setCoarse(path, sphere);
+    this.host.dataset.coarse = String(path.vertices.length / 6);
+  }
+
   resize() {
     const w = this.host.clientWidth || 300, h = this.host.clientHeight || 200;
     this.renderer.setSize(w, h);
@@ -221,12 +265,14 @@ export class View3D {
     this.draw();
   }
 
-  draw() {
+  // moving: the camera is being moved by the user (the layer may draw the coarse copy).
+  draw(moving = false) {
     if (!this.layer) return this.renderer.render(this.scene, this.camera);
     // The path layer first, then the grid, stock and tool over it.
     const r = this.renderer;
     r.clear();
-    this.layer.render(r, this.camera);
+    this.layer.render(r, this.camera, moving);
+    this.host.dataset.detail = this.layer.coarseShown ? 'coarse' : 'full';
     r.autoClear = false;
     r.render(this.scene, this.camera);
     r.autoClear = true;

@@ -23,18 +23,18 @@ const pathState = () =>
     const host = document.getElementById('view');
     const view = host.link.view, m = host.link.model;
     const attr = view.pathColourAttribute();
-    const c = attr.array, v = m.vertices;
+    const c = attr.array, v = m.vertices, w = attr.itemSize; // RGBA
     const moves = [];
     for (let mv = 0; mv < m.moves; mv++) {
       const k = m.vFirst[mv];
-      moves.push({ rgb: [c[k * 3], c[k * 3 + 1], c[k * 3 + 2]], feed: m.feed[mv], rapid: m.kind[m.mEvent[mv]] === 0, z: v[k * 3 + 2] });
+      moves.push({ rgb: [c[k * w], c[k * w + 1], c[k * w + 2]], feed: m.feed[mv], rapid: m.kind[m.mEvent[mv]] === 0, z: v[k * 3 + 2] });
     }
     let lo = 0, hi = 0;
     for (let k = 0; k < v.length / 3; k++) {
       if (v[k * 3 + 2] < v[lo * 3 + 2]) lo = k;
       if (v[k * 3 + 2] > v[hi * 3 + 2]) hi = k;
     }
-    const at = (k) => [c[k * 3], c[k * 3 + 1], c[k * 3 + 2]];
+    const at = (k) => [c[k * w], c[k * w + 1], c[k * w + 2]];
     return { version: attr.version, moves, lowest: at(lo), highest: at(hi), mode: host.dataset.colourBy };
   });
 const legend = () => page.textContent('.legend .legend-items');

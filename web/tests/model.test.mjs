@@ -9,6 +9,7 @@ import { spawnSync } from 'node:child_process';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { tokenize } from '../src/highlight.js';
+import { coarsePath } from '../src/path_lod.js';
 import { FrameReader } from '../src/wire.js';
 import { ModelBuilder, toolAt, stateAt, eventAt, notesOf, verticesDone, nextBlockEnd, prevBlockEnd, timeBreakdown, timeByTool } from '../src/model.js';
 
@@ -120,4 +121,40 @@ test('a failed run ends with an end frame that says why', () => {
   const m = modelOf('O0001\nG00 X1.\nM30\n', '[machine\n');
   assert.equal(m.answer.ok, false);
   assert.match(m.answer.error, /setup error/);
+});
+
+// Segments as path_layer.js draws them: [x, y, z] pairs, a colour and an event each.
+function segments(list) {
+  const vertices = [], colors = [], vertexEvent = [];
+  list.forEach(([a, b, col, ev]) => {
+    vertices.push(...a, ...b);
+    colors.push(...col, 255, ...col, 255);
+    vertexEvent.push(ev, ev);
+  });
+  return { vertices: Float32Array.from(vertices), colors: Uint8Array.from(colors), vertexEvent: Float32Array.from(vertexEvent) };
+}
+
+test('the coarse path merges joined segments of one colour within the tolerance, no more', () => {
+  const blue = [0x33, 0xcc, 0xff], red = [0xff, 0x55, 0x33];
+  // 100 steps of 0.1 along X, wobbling 0.01 in Y: within 0.02 they merge, 32 steps at most.
+  const wobble = Array.from({ length: 100 }, (_, i) => [[i / 10, (i % 2) / 100, 0], [(i + 1) / 10, ((i + 1) % 2) / 100, 0], blue, i]);
+  const c = coarsePath(segments(wobble), 0.02);
+  assert.equal(c.vertices.length / 6, 4); // 32 + 32 + 32 + 4
+  assert.deepEqual(Array.from(c.vertexEvent), [0, 31, 32, 63, 64, 95, 96, 99]);
+  assert.deepEqual(Array.from(c.source.subarray(0, 2)), [0, 63]); // the first start, the 32nd end
+  assert.deepEqual(Array.from(c.vertices.subarray(-3)), [10, 0, 0]);
+  // Within 0.005 nothing merges: the wobble is drawn as it is.
+  assert.equal(coarsePath(segments(wobble), 0.005).vertices.length / 6, 100);
+  // A change of colour, a gap and a corner each end a run.
+  const broken = [
+    [[0, 0, 0], [1, 0, 0], blue, 0],
+    [[1, 0, 0], [2, 0, 0], red, 1], // another colour
+    [[2.5, 0, 0], [3, 0, 0], red, 2], // not joined
+    [[3, 0, 0], [4, 0, 0], red, 3],
+    [[4, 0, 0], [4, 1, 0], red, 4], // a corner
+  ];
+  const b = coarsePath(segments(broken), 0.01);
+  assert.deepEqual(Array.from(b.vertexEvent), [0, 0, 1, 1, 2, 3, 4, 4]);
+  assert.deepEqual(Array.from(b.colors.subarray(0, 8)), [...blue, 255, ...blue, 255]);
+  assert.equal(coarsePath(segments([]), 0.01).vertices.length, 0);
 });

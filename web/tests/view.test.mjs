@@ -57,6 +57,35 @@ test('Fit frames the whole path when the view is taller than wide', async () => 
   await h.shot('view-fit-tall');
 });
 
+test('an orbit draws the coarse copy of the path, and the full path when it stops', async () => {
+  await page.setViewportSize({ width: 1400, height: 820 });
+  // 4,000 steps of 0.05 mm wobbling 0.02 mm: about a thousandth of the part's size, merged.
+  await page.evaluate(() => {
+    const lines = ['O0003 (COARSE)', 'G21 G90 G17 G54 G00 X0 Y0 Z5.', 'G01 Z-1. F1000.'];
+    for (let i = 1; i <= 4000; i++) lines.push(`G01 X${((i % 2000) / 20).toFixed(2)} Y${(Math.floor(i / 2000) * 20 + (i % 2) * 0.02).toFixed(2)}`);
+    lines.push('G00 Z5.', 'M30');
+    document.getElementById('editor').editor.text = lines.join('\n');
+  });
+  await runAndWait(page);
+  await page.waitForSelector('#view[data-coarse]');
+  const coarse = Number(await page.getAttribute('#view', 'data-coarse'));
+  const full = await page.evaluate(() => document.getElementById('view').link.view.vertexCount / 2);
+  assert.ok(coarse > 0 && coarse < full / 10, `${coarse} coarse segments of ${full}`);
+  assert.equal(await page.getAttribute('#view', 'data-detail'), 'full');
+  const box = await page.locator('#view canvas').boundingBox();
+  const cx = box.x + box.width / 2, cy = box.y + box.height / 2;
+  await page.mouse.move(cx, cy);
+  await page.mouse.down();
+  await page.mouse.move(cx + 30, cy + 10);
+  await page.mouse.move(cx + 60, cy + 20);
+  assert.equal(await page.getAttribute('#view', 'data-detail'), 'coarse');
+  assert.ok((await pathBox()).n > 500, 'the coarse path is drawn');
+  await h.shot('view-orbit-coarse');
+  await page.mouse.up();
+  await page.waitForSelector('#view[data-detail="full"]');
+  assert.ok((await pathBox()).n > 500, 'the full path is drawn');
+});
+
 test('ten runs do not keep the geometries and memory of the runs before', async () => {
   // A program of some size (20,000 moves), so that what a run leaves behind shows.
   await page.evaluate(() => {
