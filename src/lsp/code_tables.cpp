@@ -253,6 +253,8 @@ const std::vector<VariableRange>& variableTable() {
          "additional work offset number (G54.1 P), as of the block read last"},
         {4201, 4230, I::None, true, true, false,
          "modal G code of group (n - 4200), of the block running"},
+        {4302, 4330, I::None, true, true, false,
+         "B, D, E, F, H, M, N, O, S, T or P code (as #4102-#4130), of the block running"},
         {5001, 5020, I::Axis, true, true, false, "block end position (work coordinates)"},
         {5021, 5040, I::Axis, true, true, false, "current position (machine coordinates)"},
         {5041, 5060, I::Axis, true, true, false, "current position (work coordinates)"},

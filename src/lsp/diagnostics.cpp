@@ -51,6 +51,22 @@ std::string limitText(const Alarm& a, const Setup& setup) {
         a.text, setup.limits.maxBlocks);
   return a.text;
 }
+// A program that returns with M99 and never ends with M02/M30 is a subprogram or macro:
+// run on its own it would restart at M99 for ever (a level-0 M99 rewinds) with vacant
+// arguments, so the dry run is left to the programs that call it.
+bool isCalledProgram(const Program& p) {
+  bool m99 = false, end = false;
+  for (const Block& b : p.blocks) {
+    if (b.kind != BlockKind::Nc) continue;
+    const Word* w = p.words.data() + b.firstWord;
+    for (uint32_t k = 0; k < b.nWords; ++k) {
+      if (w[k].letter != 'M' || w[k].kind != WordKind::Literal) continue;
+      m99 |= w[k].value == 99;
+      end |= w[k].value == 30 || w[k].value == 2;
+    }
+  }
+  return m99 && !end;
+}
 }  // namespace
 
 nlohmann::json diagnose(const Setup& setup, const ServerOptions& options, const DocumentStore& docs,
@@ -66,7 +82,8 @@ nlohmann::json diagnose(const Setup& setup, const ServerOptions& options, const 
       f.add(std::string_view(kind) == "alarms" ? kError : kWarning, a["code"], a["text"], a["file"],
             a["line"], a["col"], "ncvm check");
     }
-  if (!session->main()) return f.out;  // no program text (yet)
+  // No program text (yet), or a subprogram: nothing to run on its own.
+  if (!session->main() || isCalledProgram(*session->main())) return f.out;
   try {
     session->setTiming(false);  // the cycle time is not shown; the run is the cheaper for it
     const Session::Result r = session->run(nullptr);

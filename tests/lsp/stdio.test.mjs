@@ -137,3 +137,25 @@ test('ncvm lsp answers a real LSP client over stdio', { timeout: 60000 }, async 
   assert.equal(await exited, 0);
   connection.dispose();
 });
+
+test('ncvm lsp with a setup it cannot read stops before the editor connects', async () => {
+  const server = spawn(bin, ['lsp', '--setup', '/nonexistent/ncvm-setup.toml'], {
+    stdio: ['pipe', 'pipe', 'pipe'],
+  });
+  let stderr = '';
+  server.stderr.on('data', (d) => (stderr += d));
+  const code = await new Promise((resolve) => server.on('exit', resolve));
+  assert.equal(code, 2);
+  assert.match(stderr, /ncvm-setup\.toml/);
+});
+
+test('ncvm lsp ends when its input closes, and answers a frame that is not JSON', async () => {
+  const server = spawn(bin, ['lsp', '--no-macros'], { stdio: ['pipe', 'pipe', 'inherit'] });
+  let out = '';
+  server.stdout.on('data', (d) => (out += d));
+  const body = '{not json';
+  server.stdin.end(`Content-Length: ${body.length}\r\n\r\n${body}`);
+  const code = await new Promise((resolve) => server.on('exit', resolve));
+  assert.equal(code, 1); // no shutdown before the end: 1, as LSP says for exit
+  assert.match(out, /"code":-32700/);
+});

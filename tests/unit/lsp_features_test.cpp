@@ -83,6 +83,18 @@ TEST(LspDiagnostics, TheDryRunOfAnEndlessLoopStopsAtTheBlockLimit) {
   EXPECT_NE(diags[0]["message"].get<std::string>().find("5000 blocks"), std::string::npos);
 }
 
+TEST(LspDiagnostics, ASubprogramIsCheckedButNotRunOnItsOwn) {
+  DocumentStore docs;
+  // Run alone, the vacant #26 and the M99 restart would be an endless loop or a false alarm.
+  Document& d =
+      docs.open("untitled:a", "O9010\nIF [#26 EQ #0] GOTO 9\nG91 G01 Z-#26 F0\nN9 M99\n", 1);
+  EXPECT_TRUE(diagnose(defaultSetup(), noMacros(), docs, d).empty());
+  docs.change("untitled:a", "O9010\nG91 G01 Z10 F0\nM99\n", 2);
+  const auto diags = diagnose(defaultSetup(), noMacros(), docs, d);
+  ASSERT_EQ(diags.size(), 1u) << diags.dump(1);
+  EXPECT_EQ(diags[0]["code"], "W001");  // check still looks at it
+}
+
 TEST(LspDiagnostics, AnAlarmInACalledProgramNamesItsFile) {
   TempFolder tmp;
   tmp.write("sub.nc", "O2000\nG01 X1. F0\nM99\n");
