@@ -9,7 +9,7 @@ help:
 	@echo "make bench      build and run the benchmarks (docs/performance.md)"
 	@echo "make build      build everything (Release, build/release)"
 	@echo "make format     clang-format the C++ sources"
-	@echo "make deps       install the Debian packages and the web viewer's npm packages"
+	@echo "make deps       install the Debian packages and the npm packages (web viewer, LSP tests, VS Code extension)"
 	@echo "make clean      remove build/"
 
 deps:
