@@ -447,6 +447,10 @@ int checkCommand(const CommonOptions& o, bool json) {
 // `ncvm lsp`: the language server on standard input and output (docs/editors.md). The setup
 // is read once, so a bad one is a setup error before the editor connects.
 int lspCommand(const CommonOptions& o, uint64_t dryRunBlocks) {
+  // A --lib folder that is not there is a usage error now, not a silent gap in every lookup.
+  for (const auto& dir : o.libs)
+    if (std::error_code ec; !std::filesystem::is_directory(dir, ec))
+      throw std::runtime_error(fmt::format("--lib {}: not a folder", dir));
   lsp::ServerOptions options;
   options.libs = o.libs;
   options.setupPaths = o.setupPaths;

@@ -6,6 +6,7 @@
 #include "lsp/diagnostics.hpp"
 #include "lsp/hover.hpp"
 #include "lsp/symbols.hpp"
+#include "machine/setup.hpp"
 
 namespace ncvm::lsp {
 
@@ -27,6 +28,13 @@ nlohmann::json capabilities() {
 
 nlohmann::json errorResponse(const nlohmann::json& id, int code, const std::string& message) {
   return {{"jsonrpc", "2.0"}, {"id", id}, {"error", {{"code", code}, {"message", message}}}};
+}
+
+// A setup error names its file, line and key, as `ncvm run` prints it.
+std::string errorText(const std::exception& e) {
+  if (const auto* s = dynamic_cast<const SetupError*>(&e))
+    return "setup error: " + setupErrorText(*s);
+  return e.what();
 }
 
 int intParam(const nlohmann::json& j, const char* key) {
@@ -58,21 +66,27 @@ nlohmann::json Server::dispatchRequest(const std::string& method, const nlohmann
     shutdown_ = true;
     return nullptr;
   }
+  // Each feature sees the document's own setup (a lathe's G codes and offset variables).
   const auto where = [&](auto f) {
     const Document* d = documentOf(params);
     const auto& pos = params.at("position");
-    return f(*d, intParam(pos, "line"), intParam(pos, "character"));
+    return f(setupForDocument(setup_, options_, *d), *d, intParam(pos, "line"),
+             intParam(pos, "character"));
   };
   if (method == "textDocument/hover")
-    return where([&](const Document& d, int l, int c) { return hover(setup_, d, l, c); });
+    return where(
+        [&](const Setup& s, const Document& d, int l, int c) { return hover(s, d, l, c); });
   if (method == "textDocument/completion")
-    return where([&](const Document& d, int l, int c) { return complete(setup_, d, l, c); });
+    return where(
+        [&](const Setup& s, const Document& d, int l, int c) { return complete(s, d, l, c); });
   if (method == "textDocument/definition")
-    return where([&](const Document& d, int l, int c) {
-      return definition(setup_, options_, docs_, d, l, c);
+    return where([&](const Setup& s, const Document& d, int l, int c) {
+      return definition(s, options_, docs_, d, l, c);
     });
-  if (method == "textDocument/documentSymbol")
-    return documentSymbols(setup_, options_, docs_, *documentOf(params));
+  if (method == "textDocument/documentSymbol") {
+    const Document* d = documentOf(params);
+    return documentSymbols(setupForDocument(setup_, options_, *d), options_, docs_, *d);
+  }
   throw RequestError{kMethodNotFound, "no such method: " + method};
 }
 
@@ -135,7 +149,7 @@ std::vector<nlohmann::json> Server::handle(const nlohmann::json& message) {
   } catch (const RequestError& e) {
     out.push_back(errorResponse(id, e.code, e.message));
   } catch (const std::exception& e) {
-    out.push_back(errorResponse(id, kInternalError, e.what()));
+    out.push_back(errorResponse(id, kInternalError, errorText(e)));
   }
   return out;
 }
@@ -147,7 +161,7 @@ std::vector<nlohmann::json> Server::publishDue() {
     if (!d) continue;
     nlohmann::json diags;
     try {
-      diags = diagnose(setup_, options_, docs_, *d);
+      diags = diagnose(setupForDocument(setup_, options_, *d), options_, docs_, *d);
     } catch (const std::exception& e) {
       diags = nlohmann::json::array(
           {{{"range",
@@ -155,7 +169,7 @@ std::vector<nlohmann::json> Server::publishDue() {
               {"end", {{"line", 0}, {"character", 0}}}}},
             {"severity", 1},
             {"source", "ncvm"},
-            {"message", std::string("ncvm could not check this document: ") + e.what()}}});
+            {"message", std::string("ncvm could not check this document: ") + errorText(e)}}});
     }
     out.push_back({{"jsonrpc", "2.0"},
                    {"method", "textDocument/publishDiagnostics"},

@@ -3,7 +3,20 @@
 #include <filesystem>
 #include <set>
 
+#include "core/program_files.hpp"
+
 namespace ncvm::lsp {
+
+Setup setupForDocument(const Setup& serverSetup, const ServerOptions& options,
+                       const Document& doc) {
+  if (!options.setupPaths.empty() || doc.path.empty()) return serverSetup;
+  const std::filesystem::path beside = setupFileFor(doc.path);
+  if (beside.empty()) return serverSetup;
+  Setup s = defaultSetup();
+  loadSetupInto(s, beside.string());
+  for (const auto& kv : options.sets) applySetting(s, kv);
+  return s;
+}
 
 std::string documentName(const Document& doc) {
   return doc.path.empty() ? doc.uri : doc.path;

@@ -23,6 +23,12 @@ struct ServerOptions {
   uint64_t dryRunBlocks = 200'000;
 };
 
+// The setup a document is checked with: the server's (--setup, --set) when it was given
+// --setup; else the setup file beside the document by the rule of `ncvm list`, `ncvm serve`
+// and `make demo` (core/program_files.hpp: NAME.toml, BASE.toml, setup.toml), with the
+// --set values; else the server's. Throws SetupError for a setup file that does not load.
+Setup setupForDocument(const Setup& serverSetup, const ServerOptions& options, const Document& doc);
+
 // The name the document's programs carry in alarms: its path, or the URI when it is no file.
 std::string documentName(const Document& doc);
 

@@ -149,6 +149,17 @@ test('ncvm lsp with a setup it cannot read stops before the editor connects', as
   assert.match(stderr, /ncvm-setup\.toml/);
 });
 
+test('ncvm lsp refuses a --lib folder that is not there', async () => {
+  const server = spawn(bin, ['lsp', '--lib', '/nonexistent/ncvm-lib'], {
+    stdio: ['pipe', 'pipe', 'pipe'],
+  });
+  let stderr = '';
+  server.stderr.on('data', (d) => (stderr += d));
+  const code = await new Promise((resolve) => server.on('exit', resolve));
+  assert.equal(code, 2);
+  assert.match(stderr, /--lib \/nonexistent\/ncvm-lib: not a folder/);
+});
+
 test('ncvm lsp ends when its input closes, and answers a frame that is not JSON', async () => {
   const server = spawn(bin, ['lsp', '--no-macros'], { stdio: ['pipe', 'pipe', 'inherit'] });
   let out = '';

@@ -1,6 +1,9 @@
 // The server's dispatch: the LSP life cycle, document sync, diagnostics when due, errors.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "lsp/server.hpp"
 
 using namespace ncvm;
@@ -102,4 +105,37 @@ TEST(LspServer, ExitsWithZeroOnlyAfterShutdown) {
   b.handle(notification("exit", json::object()));
   EXPECT_TRUE(b.exited());
   EXPECT_EQ(b.exitCode(), 1);
+}
+
+TEST(LspServer, ADocumentWithoutSetupOptionsUsesTheSetupBesideIt) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "ncvm-lsp-setup-beside";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "part.toml") << "[machine]\nkind = \"lathe\"\n";
+  std::ofstream(dir / "broken.toml") << "[machine\n";
+  Server s = makeServer();
+  s.handle(request(1, "initialize"));
+  const auto hoverAt = [&](const std::string& file, int id) {
+    const std::string uri = pathToUri((dir / file).string());
+    s.handle(notification("textDocument/didOpen",
+                          {{"textDocument", {{"uri", uri}, {"version", 1}, {"text", "#2001\n"}}}}));
+    return s.handle(request(
+        id, "textDocument/hover",
+        {{"textDocument", {{"uri", uri}}}, {"position", {{"line", 0}, {"character", 1}}}}))[0];
+  };
+  EXPECT_NE(hoverAt("part.nc", 2)["result"]["contents"]["value"].get<std::string>().find("X wear"),
+            std::string::npos);  // part.toml: a lathe
+  EXPECT_NE(hoverAt("other.nc", 3)["result"]["contents"]["value"].get<std::string>().find("H"),
+            std::string::npos);  // no setup beside it: the server's mill
+  const auto broken = hoverAt("broken.nc", 4);
+  EXPECT_NE(broken["error"]["message"].get<std::string>().find("broken.toml"), std::string::npos);
+  const auto diags = s.publishDue();
+  bool reported = false;
+  for (const auto& d : diags)
+    if (d["params"]["uri"] == pathToUri((dir / "broken.nc").string()))
+      reported = d["params"]["diagnostics"][0]["message"].get<std::string>().find("setup error") !=
+                 std::string::npos;
+  EXPECT_TRUE(reported);
+  fs::remove_all(dir);
 }
