@@ -1,5 +1,7 @@
 #include "lsp/server.hpp"
 
+#include <fmt/format.h>
+
 #include "core/version.hpp"
 #include "lsp/completion.hpp"
 #include "lsp/definition.hpp"
@@ -74,8 +76,19 @@ nlohmann::json Server::dispatchRequest(const std::string& method, const nlohmann
              intParam(pos, "character"));
   };
   if (method == "textDocument/hover")
-    return where(
-        [&](const Setup& s, const Document& d, int l, int c) { return hover(s, d, l, c); });
+    return where([&](const Setup& s, const Document& d, int l, int c) {
+      nlohmann::json h = hover(s, d, l, c);
+      // A call or a GOTO also says where it leads (what go to definition opens).
+      if (h.is_null()) return h;
+      const nlohmann::json to = definition(s, options_, docs_, d, l, c);
+      if (to.is_null()) return h;
+      const std::string uri = to["uri"];
+      const std::string path = uriToPath(uri);
+      h["contents"]["value"] = h["contents"]["value"].get<std::string>() +
+                               fmt::format("\n→ {}:{}", path.empty() ? uri : path,
+                                           to["range"]["start"]["line"].get<int>() + 1);
+      return h;
+    });
   if (method == "textDocument/completion")
     return where(
         [&](const Setup& s, const Document& d, int l, int c) { return complete(s, d, l, c); });

@@ -96,6 +96,15 @@ test('ncvm lsp answers a real LSP client over stdio', { timeout: 60000 }, async 
     position: { line: 3, character: 1 },
   });
   assert.match(gHover.contents.value, /^G65: /);
+  const callHover = await connection.sendRequest(lsp.HoverRequest.type, {
+    textDocument: { uri },
+    position: { line: 3, character: 6 },
+  });
+  assert.match(callHover.contents.value, /^P9010: program number to call/);
+  assert.ok(
+    callHover.contents.value.endsWith(`→ ${join(dir, 'lib', 'O9010.nc')}:2`),
+    callHover.contents.value,
+  );
 
   const def = await connection.sendRequest(lsp.DefinitionRequest.type, {
     textDocument: { uri },

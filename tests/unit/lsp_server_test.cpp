@@ -75,6 +75,16 @@ TEST(LspServer, RoutesFeatureRequestsAndAnswersErrorsForBadOnes) {
                    {"position", {{"line", 1}, {"character", 1}}}};
   auto h = s.handle(request(2, "textDocument/hover", at));
   EXPECT_NE(h[0]["result"]["contents"]["value"].get<std::string>().find("G01"), std::string::npos);
+  EXPECT_EQ(h[0]["result"]["contents"]["value"].get<std::string>().find("→"), std::string::npos);
+  s.handle(notification(
+      "textDocument/didOpen",
+      {{"textDocument",
+        {{"uri", "untitled:g"}, {"version", 1}, {"text", "O0100\nN5 #1=1\nGOTO5\n"}}}}));
+  auto jump = s.handle(request(
+      9, "textDocument/hover",
+      {{"textDocument", {{"uri", "untitled:g"}}}, {"position", {{"line", 2}, {"character", 4}}}}));
+  EXPECT_NE(jump[0]["result"]["contents"]["value"].get<std::string>().find("→ untitled:g:2"),
+            std::string::npos);
   auto sym = s.handle(request(3, "textDocument/documentSymbol", at));
   EXPECT_EQ(sym[0]["result"][0]["name"], "O0100");
   auto c = s.handle(request(4, "textDocument/completion", at));
