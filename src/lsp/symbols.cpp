@@ -32,7 +32,10 @@ nlohmann::json documentSymbols(const Setup& setup, const ServerOptions& options,
     const uint32_t last = p.blocks.empty() ? first : std::max(first, p.blocks.back().loc.line);
     const int line0 = static_cast<int>(first - 1);
     nlohmann::json sym;
-    sym["name"] = p.number >= 0 ? p.label : "<" + p.name + ">";
+    // O number, <NAME> header, or neither: a file without a header is named by its stem.
+    bool named = false;
+    for (const auto& t : tokenizeLine(lineText(first))) named |= t.kind == Token::Kind::ProgramName;
+    sym["name"] = p.number >= 0 ? p.label : named ? "<" + p.name + ">" : p.label;
     sym["kind"] = kSymbolFunction;
     const std::string_view lastText = lineText(last);
     sym["range"] = {{"start", {{"line", line0}, {"character", 0}}},

@@ -189,6 +189,17 @@ TEST(LspSymbols, ListsProgramsWithTheirLabels) {
   EXPECT_EQ(syms[0]["children"][1]["selectionRange"]["start"]["line"], 3);
 }
 
+TEST(LspSymbols, NamesAProgramByItsNameOrByTheFileWithoutAHeader) {
+  DocumentStore docs;
+  Document& named = docs.open("file:///tmp/pocket.nc", "<POCKET>\nN1 M99\n", 1);
+  EXPECT_EQ(documentSymbols(defaultSetup(), noMacros(), docs, named)[0]["name"], "<POCKET>");
+  Document& bare = docs.open("file:///tmp/bare.nc", "G00 X1.\nN5 M30\n", 1);
+  const auto syms = documentSymbols(defaultSetup(), noMacros(), docs, bare);
+  ASSERT_EQ(syms.size(), 1u);
+  EXPECT_NE(syms[0]["name"].get<std::string>().front(), '<') << syms[0]["name"];
+  EXPECT_EQ(syms[0]["children"][0]["name"], "N5");
+}
+
 TEST(LspCompletion, OffersTheSeriesGCodesAndTheSystemVariables) {
   DocumentStore docs;
   Document& d = docs.open("untitled:a", "G7\n#50\nX1.\n", 1);
