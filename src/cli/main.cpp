@@ -688,7 +688,8 @@ int main(int argc, char** argv) {
       ->add_option("--max-blocks", lspBlocks,
                    "blocks the dry run of a document may execute before it stops (default "
                    "200000; the setup's limits.max_blocks when smaller)")
-      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 40));
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 40))
+      ->type_name("N");
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
