@@ -39,7 +39,7 @@ nlohmann::json complete(const Setup& setup, const Document& doc, int line, int c
   nlohmann::json items = nlohmann::json::array();
   if (start == 0) return {{"isIncomplete", false}, {"items", items}};
   const char lead = static_cast<char>(std::toupper(static_cast<unsigned char>(text[start - 1])));
-  // The G or M must be an address, not the end of a keyword (the G of a LOG...).
+  // The G or M must be an address, not the last letter of a keyword.
   const bool word = start < 2 || !std::isalpha(static_cast<unsigned char>(text[start - 2]));
   const nlohmann::json replace = range(line, text, start - 1, cursor);
   if (lead == 'G' && word) {
