@@ -10,7 +10,7 @@ help:
 	@echo "make build      build everything (Release, build/release)"
 	@echo "make format     clang-format the C++ sources"
 	@echo "make screenshots build, retake the web viewer's pictures in docs/images/"
-	@echo "make deps       install the Debian packages and the web viewer's npm packages"
+	@echo "make deps       install the Debian packages and the npm packages (web viewer, LSP tests, VS Code extension)"
 	@echo "make clean      remove build/"
 
 deps:

@@ -28,6 +28,7 @@
 #include "core/program_files.hpp"
 #include "core/version.hpp"
 #include "exec/gcode_table.hpp"
+#include "lsp/stdio_server.hpp"
 #include "report/atomic_file.hpp"
 #include "report/clock_time.hpp"
 #include "report/html_report.hpp"
@@ -455,6 +456,22 @@ int checkCommand(const CommonOptions& o, bool json) {
   return report["alarms"].empty() ? kExitOk : kExitAlarm;
 }
 
+// `ncvm lsp`: the language server on standard input and output (docs/editors.md). The setup
+// is read once, so a bad one is a setup error before the editor connects.
+int lspCommand(const CommonOptions& o, uint64_t dryRunBlocks) {
+  // A --lib folder that is not there is a usage error now, not a silent gap in every lookup.
+  for (const auto& dir : o.libs)
+    if (std::error_code ec; !std::filesystem::is_directory(dir, ec))
+      throw std::runtime_error(fmt::format("--lib {}: not a folder", dir));
+  lsp::ServerOptions options;
+  options.libs = o.libs;
+  options.setupPaths = o.setupPaths;
+  options.sets = o.sets;
+  options.noMacros = o.noMacros;
+  options.dryRunBlocks = dryRunBlocks;
+  return lsp::runStdioServer(0, 1, makeSetup(o), std::move(options));
+}
+
 // ncvm sweep: the program over every combination of --vary values, with the stock analysis.
 int sweepCommand(const CommonOptions& o, const std::vector<std::string>& varies,
                  const std::string& outRoot, bool csv) {
@@ -674,6 +691,17 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingDirectory)
       ->type_name("DIR");
+  CommonOptions lspOpts;
+  uint64_t lspBlocks = lsp::ServerOptions{}.dryRunBlocks;
+  auto* lspCmd = app.add_subcommand(
+      "lsp", "language server for editors on standard input/output (LSP, docs/editors.md)");
+  addSetupOptions(lspCmd, lspOpts);
+  lspCmd
+      ->add_option("--max-blocks", lspBlocks,
+                   "blocks the dry run of a document may execute before it stops (default "
+                   "200000; the setup's limits.max_blocks when smaller)")
+      ->check(CLI::Range(uint64_t{1}, uint64_t{1} << 40))
+      ->type_name("N");
   app.add_subcommand("alarms", "print the alarm table (Markdown)");
   app.add_subcommand("codes", "print the G-code support table (Markdown)");
 
@@ -689,6 +717,7 @@ int main(int argc, char** argv) {
     if (serve->parsed()) return startServer(argc, argv);
     if (worker->parsed()) return server::workerMain(workerMemory);
     if (list->parsed()) return listCommand(listDirs);
+    if (lspCmd->parsed()) return lspCommand(lspOpts, lspBlocks);
     if (app.got_subcommand("alarms")) printAlarmTable();
     if (app.got_subcommand("codes")) printCodeTable();
     return kExitOk;
