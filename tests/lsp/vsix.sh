@@ -4,6 +4,12 @@
 # library it starts the server with.
 set -euo pipefail
 root="$1" out="$2"
+# @vscode/vsce's dependencies need Node.js 20; Debian 12's is 18 (docs/editors.md).
+node_major=$(node -p 'process.versions.node.split(".")[0]')
+if [ "$node_major" -lt 20 ]; then
+  echo "vscode_vsix: skipped: packaging the extension needs Node.js 20 or newer, this is $(node --version)"
+  exit 77
+fi
 rm -f "$out"
 "$root/scripts/package-vscode-extension" "$out" >/dev/null
 python3 - "$out" <<'PY'
