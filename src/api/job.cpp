@@ -27,24 +27,6 @@ std::string dataFolder() {
   return findDataFolder();
 }
 
-std::string endReasonName(EndReason reason) {
-  switch (reason) {
-    case EndReason::M30:
-      return "M30";
-    case EndReason::M02:
-      return "M02";
-    case EndReason::M99:
-      return "M99";
-    case EndReason::Alarm:
-      return "alarm";
-    case EndReason::EndOfFile:
-      return ncvm::endReasonName(ncvm::EndReason::Eof);
-    case EndReason::Limit:
-      return ncvm::endReasonName(ncvm::EndReason::Limit);
-  }
-  return "?";
-}
-
 namespace {
 
 struct ProgramText {
@@ -106,6 +88,15 @@ std::string dumpJson(const nlohmann::json& j) {
 }
 
 }  // namespace
+
+std::string endReasonName(EndReason reason) {
+  // One mapping between the public and the engine's ends (publicEnd), one set of names (the
+  // state JSON's).
+  for (ncvm::EndReason r : {ncvm::EndReason::M30, ncvm::EndReason::M02, ncvm::EndReason::M99,
+                            ncvm::EndReason::Alarm, ncvm::EndReason::Eof, ncvm::EndReason::Limit})
+    if (publicEnd(r) == reason) return ncvm::endReasonName(r);
+  return "?";
+}
 
 struct Job::Impl {
   Setup setup = defaultSetup();
