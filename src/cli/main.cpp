@@ -23,6 +23,7 @@
 #include "app/sweep.hpp"
 #include "cli/command_line.hpp"
 #include "cli/serve_options.hpp"
+#include "cli/terminal.hpp"
 #include "core/alarm.hpp"
 #include "core/edit_distance.hpp"
 #include "core/program_files.hpp"
@@ -158,8 +159,10 @@ struct RunOutputs {
 
 // One run; what it would print goes to `out` (stdout) and `err` (stderr), so batch runs on
 // several threads can print each program's report whole, in command-line order.
+// `progress`: a progress line on standard error when it is a terminal (not for batch runs,
+// whose programs run side by side).
 int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::string& out,
-           std::string& err) {
+           std::string& err, bool progress = false) {
   auto outAt = std::back_inserter(out);
   auto errAt = std::back_inserter(err);
   const std::string& tracePath = outs.trace;
@@ -205,7 +208,10 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     tempStock = true;
   }
   if (!stockDir.empty()) session.simulateStock(stockDir);
-  for (const auto& w : session.store().warnings()) fmt::format_to(errAt, "ncvm: warning: {}\n", w);
+  const std::string warningWord =
+      cli::painted("warning:", cli::Paint::Yellow, cli::colourWanted(stderr));
+  for (const auto& w : session.store().warnings())
+    fmt::format_to(errAt, "ncvm: {} {}\n", warningWord, w);
 
   std::unique_ptr<AtomicFile> traceFile;
   std::unique_ptr<TraceWriter> trace;
@@ -229,7 +235,17 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     sinks.add(recorder.get());
     sink = &sinks;
   }
+  cli::MoveCounter counter;
+  std::optional<cli::ProgressLine> progressLine;
+  FanoutSink counted;
+  if (progress && !quiet && cli::isTerminal(stderr)) {
+    counted.add(&counter);
+    if (sink) counted.add(sink);
+    sink = &counted;
+    progressLine.emplace(session.files().name(session.main()->loc.file), counter);
+  }
   Session::Result r = session.run(sink, memory);
+  progressLine.reset();  // erases the line before anything else is printed
   // Every output is attempted even when one fails (a full disk): the machine state first,
   // then the others; each failure is reported with its own file, and the run exits 2.
   std::vector<std::string> failed;
@@ -287,9 +303,13 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
   }
 
   const Program* main = session.main();
+  // The summary's colours, only when it goes to a terminal (stderr when stdout carries data).
+  const bool colourOut = cli::colourWanted(toStdout ? stderr : stdout);
   if (!quiet) {
     fmt::format_to(outAt, "ncvm: {} ({}) ended: {}\n", session.files().name(main->loc.file),
-                   main->label, endReasonName(r.end));
+                   main->label,
+                   cli::painted(endReasonName(r.end), r.alarm ? cli::Paint::Red : cli::Paint::Green,
+                                colourOut));
     std::string cycle = fmt::format("{} (length/feed)", clockTime(r.stats.time));
     if (session.setup().timing.dynamic && r.timing)
       cycle = fmt::format("{} (modelled), {} (length/feed)", clockTime(r.timing->total().model),
@@ -300,7 +320,7 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
         r.stats.rapidLength, r.stats.feedLength, cycle);
     for (const auto& w : r.warnings)
       fmt::format_to(outAt, "{}:{}:{}: {} {}\n", session.files().name(w.loc.file), w.loc.line,
-                     w.loc.col, w.code, w.text);
+                     w.loc.col, cli::painted(w.code, cli::Paint::Yellow, colourOut), w.text);
     if (!tracePath.empty()) fmt::format_to(outAt, "  trace: {}\n", tracePath);
     if (!statePath.empty()) fmt::format_to(outAt, "  state: {}\n", statePath);
     if (r.stock.is_object()) {
@@ -325,7 +345,9 @@ int runOne(const CommonOptions& o, const RunOutputs& outs, bool quiet, std::stri
     if (!outs.report.empty()) fmt::format_to(outAt, "  report: {}\n", outs.report);
     if (!r.printed.empty() && !dprnt.empty()) fmt::format_to(outAt, "  output: {}\n", dprnt);
   }
-  if (r.alarm) fmt::format_to(outAt, "{}\n", alarmLine(*r.alarm, session.files()));
+  if (r.alarm)
+    fmt::format_to(outAt, "{}\n",
+                   cli::painted(alarmLine(*r.alarm, session.files()), cli::Paint::Red, colourOut));
   if (toStdout) {
     err += out;
     out.clear();
@@ -365,7 +387,7 @@ int runCommand(const CommonOptions& o, const RunOutputs& outs, bool quiet) {
   std::string out, err;
   int rc = 0;
   try {
-    rc = runOne(o, outs, quiet, out, err);
+    rc = runOne(o, outs, quiet, out, err, true);
   } catch (...) {
     std::fputs(err.c_str(), stderr);
     throw;
@@ -445,10 +467,13 @@ int checkCommand(const CommonOptions& o, bool json) {
   if (json) {
     fmt::print("{}\n", dumpJson(report));
   } else {
+    const bool colour = cli::colourWanted(stdout);
     for (const char* kind : {"alarms", "warnings"})
       for (const auto& a : report[kind])
         fmt::print("{}:{}:{}: {} {}\n", printable(a["file"].get<std::string>()),
-                   a["line"].get<int>(), a["col"].get<int>(), a["code"].get<std::string>(),
+                   a["line"].get<int>(), a["col"].get<int>(),
+                   cli::painted(a["code"].get<std::string>(),
+                                kind[0] == 'a' ? cli::Paint::Red : cli::Paint::Yellow, colour),
                    printable(a["text"].get<std::string>()));
     fmt::print("ncvm check: {} alarm(s), {} warning(s)\n", report["alarms"].size(),
                report["warnings"].size());
