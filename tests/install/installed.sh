@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # An installed prefix works from another folder (issue 28): the layout, `ncvm run` finding
 # its macros and presets, the man page and completion, and the C++ API built against the
-# prefix twice: with find_package(ncvm) (examples/embed) and with pkg-config.
+# prefix twice: with find_package(ncvm) (examples/embed) and with pkg-config; `ncvm lsp`.
 #   installed.sh PREFIX SOURCE_DIR
 set -uo pipefail
 prefix=$(realpath "$1") src=$(realpath "$2")
@@ -72,4 +72,18 @@ g++ -std=c++17 -o "$tmp/embed-pc" "$prefix/share/ncvm/examples/embed/main.cpp" \
   $(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --cflags --libs ncvm) >"$tmp/out" 2>&1 ||
   fail "pkg-config: build"
 "$tmp/embed-pc" "$ex/macro-basics/bolt-circle.nc" >"$tmp/out" 2>&1 || fail "pkg-config build: run"
+
+# The installed language server, from elsewhere: initialize, a document whose dry run alarms
+# (diagnostics from the engine), shutdown and exit, framed as an editor frames them.
+frame() { printf 'Content-Length: %d\r\n\r\n%s' "${#1}" "$1"; }
+{
+  frame '{"jsonrpc":"2.0","id":1,"method":"initialize","params":{"processId":null,"rootUri":null,"capabilities":{}}}'
+  frame '{"jsonrpc":"2.0","method":"initialized","params":{}}'
+  frame '{"jsonrpc":"2.0","method":"textDocument/didOpen","params":{"textDocument":{"uri":"file:///tmp/x.nc","languageId":"fanuc","version":1,"text":"O0001\nG01 X10.\nM30\n"}}}'
+  sleep 1
+  frame '{"jsonrpc":"2.0","id":2,"method":"shutdown"}'
+  frame '{"jsonrpc":"2.0","method":"exit"}'
+} | timeout 60 "$prefix/bin/ncvm" lsp >"$tmp/out" 2>&1 || fail "installed ncvm lsp (exit $?)"
+grep -q '"capabilities"' "$tmp/out" || fail "ncvm lsp: no initialize result"
+grep -q 'PS0011' "$tmp/out" || fail "ncvm lsp: no diagnostic from the dry run"
 echo "installed prefix: ok"
