@@ -1,5 +1,5 @@
-// Macro variables: #0, locals per call level, common #100-#199 and #500-#999, and the
-// system variables of fanuc-reference B.8-B.10.
+// The system variables of fanuc-reference B.8-B.10 (#1000 and up), which read and change the
+// machine; #0-#999 are the MacroVariables component's (macro_variables.hpp).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,16 +17,6 @@ int Executor::axisByNumber(int n) const {
     if (++seen == n) return k;
   }
   return -1;
-}
-
-// #200-#499 exist only with the option that adds common variables.
-static void common200Option(const Setup& setup, int64_t n) {
-  if (!setup.commonVars200)
-    throw AlarmError(
-        AlarmId::VariableOutOfRange,
-        fmt::format("#{}: common variables #200-#499 are an option (options.common_vars_200 = true "
-                    "in the setup)",
-                    n));
 }
 
 // PS0115 for a number ncvm does not know: the Fanuc range it is in when there is one, so a
@@ -60,44 +50,16 @@ static AlarmError unknownVariable(int64_t n) {
   return AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
 }
 
+// #0-#999 belong to the macro variables (macro_variables.hpp); the rest is the system's.
 Value Executor::readVar(int64_t n) {
-  if (n >= 1 && n <= 33)
-    return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
-  if (n >= 100 && n <= 199) return common100_[static_cast<size_t>(n - 100)];
-  if (n >= 500 && n <= 999) return mem_.common500[static_cast<size_t>(n - 500)];
-  if (n == 0) return Value::vacant();
-  if (n >= 1000) return readSystem(n);
-  if (n >= 200 && n <= 499) {
-    common200Option(setup_, n);
-    return common200_[static_cast<size_t>(n - 200)];
-  }
-  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  if (n < 1000) return vars_.read(n, frames_.back().level);
+  return readSystem(n);
 }
 
 void Executor::writeVar(int64_t n, Value v) {
+  if (n < 1000) return vars_.write(n, v, localLevel());
   if (!v.null && !std::isfinite(v.v)) throw AlarmError(AlarmId::FloatOverflow);
-  if (n >= 1 && n <= 33) {
-    auto L = static_cast<size_t>(frames_.empty() ? 0 : frames_.back().level);
-    locals_[L][static_cast<size_t>(n - 1)] = v;
-    noPointScale_[L][static_cast<size_t>(n - 1)] = 0;
-    return;
-  }
-  if (n >= 100 && n <= 199) {
-    common100_[static_cast<size_t>(n - 100)] = v;
-    return;
-  }
-  if (n >= 500 && n <= 999) {
-    mem_.common500[static_cast<size_t>(n - 500)] = v;
-    return;
-  }
-  if (n == 0) throw AlarmError(AlarmId::WriteProtectedVariable, "#0");
-  if (n >= 1000) return writeSystem(n, v);
-  if (n >= 200 && n <= 499) {
-    common200Option(setup_, n);
-    common200_[static_cast<size_t>(n - 200)] = v;
-    return;
-  }
-  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  writeSystem(n, v);
 }
 
 // An input as the setup gives it ([signals]): each read takes the next value of its list, the
