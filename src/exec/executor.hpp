@@ -19,6 +19,7 @@
 #include "core/alarm.hpp"
 #include "core/value.hpp"
 #include "exec/gcode_table.hpp"
+#include "exec/interface_signals.hpp"
 #include "exec/macro_variables.hpp"
 #include "lang/ir.hpp"
 #include "lang/program_store.hpp"
@@ -89,7 +90,7 @@ class Executor {
   // Non-vacant level-0 locals and common variables, for the state file.
   std::vector<std::pair<int, double>> userVariables() const;
   // The interface signal outputs as the program left them: 0 = UO000-UO031, 1 = UO100-UO131.
-  uint32_t signalOutputs(int word) const { return signalOut_[static_cast<size_t>(word)]; }
+  uint32_t signalOutputs(int word) const { return signals_.outputs(word); }
   // #1-#33 of the current call level and #100-#199, as readVar gives them: the web viewer
   // compares them after every event (src/server/state_diff.cpp), where 133 calls would cost.
   const std::array<Value, 33>& currentLocals() const {
@@ -156,14 +157,7 @@ class Executor {
   // their state here.
   int localLevel() const { return frames_.empty() ? 0 : frames_.back().level; }
   double timerMsOffset_ = 0, timerHourOffset_ = 0;
-  // Interface signals (variables.cpp): reads so far of each input #1000-#1032 (its place in the
-  // setup's list), whether its missing-input warning was given, and the outputs UO000-UO031
-  // (#1100-#1131, #1132) and UO100-UO131 (#1133).
-  std::array<uint32_t, 33> signalReads_{};
-  std::array<bool, 33> signalWarned_{};
-  std::array<uint32_t, 2> signalOut_{};
-  double readSignalInput(int n);
-  void writeSignalOutput(int n, Value v);
+  InterfaceSignals signals_{setup_.signals};  // #1000-#1032, #1100-#1133
   std::array<Value, 64> evalStack_{};
   double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0;
 

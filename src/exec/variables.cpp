@@ -62,63 +62,6 @@ void Executor::writeVar(int64_t n, Value v) {
   writeSystem(n, v);
 }
 
-// An input as the setup gives it ([signals]): each read takes the next value of its list, the
-// last one repeating. A bit the setup does not give comes from #1032's word when that is
-// given; #1032 not given is made of the bits that are (the others 0).
-double Executor::readSignalInput(int n) {
-  const auto& inputs = setup_.signals.inputs;
-  auto next = [&](int v) {
-    const std::vector<double>& values = inputs.at(v);
-    uint32_t& k = signalReads_[static_cast<size_t>(v - 1000)];
-    double x = values[std::min<size_t>(k, values.size() - 1)];
-    if (k < values.size()) ++k;
-    return x;
-  };
-  if (inputs.count(n)) return next(n);
-  if (n < 1032) {
-    if (inputs.count(1032))
-      return static_cast<double>((static_cast<uint32_t>(next(1032)) >> (n - 1000)) & 1u);
-  } else {
-    bool any = false;
-    uint32_t word = 0;
-    for (int k = 0; k < 32; ++k)
-      if (inputs.count(1000 + k)) {
-        any = true;
-        if (next(1000 + k) != 0) word |= 1u << k;
-      }
-    if (any) return static_cast<double>(word);
-  }
-  const std::string what = n < 1032 ? fmt::format("#{} (input signal UI{:03d})", n, n - 1000)
-                                    : std::string("#1032 (input signals UI000-UI031)");
-  if (setup_.signals.missingAlarm) throw AlarmError(AlarmId::SignalNotGiven, what);
-  if (!signalWarned_[static_cast<size_t>(n - 1000)]) {
-    signalWarned_[static_cast<size_t>(n - 1000)] = true;
-    warn("W006", what + " is not in the setup's [signals]: it reads 0");
-  }
-  return 0;
-}
-
-// #1100-#1131 set one output (0 off, any other value on; vacant is 0); #1132 and #1133 set 32
-// at once (UO000-UO031, UO100-UO131; a negative value is its 32-bit two's complement).
-void Executor::writeSignalOutput(int n, Value v) {
-  const double x = v.null ? 0.0 : v.v;
-  double stored = 0;
-  if (n <= 1131) {
-    const uint32_t bit = 1u << (n - 1100);
-    const bool on = x != 0;
-    signalOut_[0] = on ? signalOut_[0] | bit : signalOut_[0] & ~bit;
-    stored = on ? 1 : 0;
-  } else {
-    const double r = std::nearbyint(x);
-    if (!(r >= -2147483648.0 && r <= 4294967295.0))
-      throw AlarmError(AlarmId::IntegerOverflow, fmt::format("#{} takes a 32-bit value", n));
-    const auto word = static_cast<uint32_t>(static_cast<int64_t>(r));
-    signalOut_[static_cast<size_t>(n - 1132)] = word;
-    stored = static_cast<double>(word);
-  }
-  sink().onSignal(SignalEvent{origin_, n, stored});
-}
-
 Value Executor::readSystem(int64_t n) {
   auto posVar = [&](int64_t base, const std::array<int64_t, kMaxAxes>& nm, bool work) -> Value {
     int slot = axisByNumber(static_cast<int>(n - base));
@@ -143,11 +86,13 @@ Value Executor::readSystem(int64_t n) {
       throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
     return Value::num(0.0);
   }
-  if (n >= 1000 && n <= 1032) return Value::num(readSignalInput(static_cast<int>(n)));
-  if (n >= 1100 && n <= 1131)
-    return Value::num(static_cast<double>((signalOut_[0] >> (n - 1100)) & 1u));
-  if (n == 1132 || n == 1133)
-    return Value::num(static_cast<double>(signalOut_[static_cast<size_t>(n - 1132)]));
+  if (n >= 1000 && n <= 1032) {
+    std::string warning;
+    const double x = signals_.readInput(static_cast<int>(n), warning);
+    if (!warning.empty()) warn("W006", std::move(warning));
+    return Value::num(x);
+  }
+  if (n >= 1100 && n <= 1133) return Value::num(signals_.readOutput(static_cast<int>(n)));
   if ((n >= 4001 && n <= 4030) || (n >= 4201 && n <= 4230)) {
     // Parameter 0001#1 (FCV) = 1, the Series 15 program format: the modal groups are read by
     // their FS15 numbers, where the work coordinate system G54-G59 is group 12 (#4012) and the
@@ -274,7 +219,11 @@ void Executor::writeSystem(int64_t n, Value v) {
     default:
       break;
   }
-  if (n >= 1100 && n <= 1133) return writeSignalOutput(static_cast<int>(n), v);
+  if (n >= 1100 && n <= 1133) {
+    const double stored = signals_.writeOutput(static_cast<int>(n), v);
+    sink().onSignal(SignalEvent{origin_, static_cast<int>(n), stored});
+    return;
+  }
   if (n == 3007 || n == 3011 || n == 3012 || n == 4000 || (n >= 4001 && n <= 4330) ||
       (n >= 5001 && n <= 5140) || (n >= 1000 && n <= 1032) || n == 3100 || n == 3101)
     throw AlarmError(AlarmId::WriteProtectedVariable, fmt::format("#{}", n));
