@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "app/machine_state.hpp"
+#include "exec/gcode_table.hpp"
 #include "sim/stock_model.hpp"
 #include "sim/stock_probe.hpp"
 #include "timing/timing_stage.hpp"

@@ -139,9 +139,7 @@ double Executor::callFn(Fn fn, double a, double b, int32_t arg) {
     }
     case Fn::Adp: {
       // ADP[#n]: undo the least-increment scaling of an argument written without a point.
-      if (arg < 1 || arg > 33) return a;
-      double scale =
-          noPointScale_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(arg - 1)];
+      const double scale = vars_.noPointScale(frames_.back().level, arg);
       return scale > 0 ? a * scale : a;
     }
   }

@@ -219,11 +219,7 @@ void Executor::callMacro(const Program* p, int repeats, const std::array<Value, 
     f.modalFloor = static_cast<int16_t>(modalCalls_.size());
   else
     f.modalFloor = floor;
-  auto L = static_cast<size_t>(level);
-  locals_[L] = args;
-  noPointScale_[L] = scale;
-  callArgs_[L] = args;
-  callArgScale_[L] = scale;
+  vars_.enterCall(level, args, scale);
 }
 
 void Executor::doReturn(int32_t label) {
@@ -244,11 +240,7 @@ void Executor::doReturn(int32_t label) {
   if (f.repeatsLeft > 0 && label < 0) {
     --f.repeatsLeft;
     f.pc = f.startPc;
-    if (f.kind != FrameKind::Sub) {
-      auto L = static_cast<size_t>(f.level);
-      locals_[L] = callArgs_[L];
-      noPointScale_[L] = callArgScale_[L];
-    }
+    if (f.kind != FrameKind::Sub) vars_.repeatCall(f.level);
     return;
   }
   if (f.kind == FrameKind::Sub)
@@ -490,20 +482,7 @@ void Executor::advanceTime(double seconds) {
 }
 
 std::vector<std::pair<int, double>> Executor::userVariables() const {
-  std::vector<std::pair<int, double>> out;
-  for (int k = 0; k < 33; ++k)
-    if (!locals_[0][static_cast<size_t>(k)].null)
-      out.emplace_back(k + 1, locals_[0][static_cast<size_t>(k)].v);
-  for (int k = 0; k < 100; ++k)
-    if (!common100_[static_cast<size_t>(k)].null)
-      out.emplace_back(100 + k, common100_[static_cast<size_t>(k)].v);
-  for (int k = 0; k < 300; ++k)
-    if (!common200_[static_cast<size_t>(k)].null)
-      out.emplace_back(200 + k, common200_[static_cast<size_t>(k)].v);
-  for (int k = 0; k < 500; ++k)
-    if (!mem_.common500[static_cast<size_t>(k)].null)
-      out.emplace_back(500 + k, mem_.common500[static_cast<size_t>(k)].v);
-  return out;
+  return vars_.userVariables();
 }
 
 }  // namespace ncvm

@@ -1,8 +1,9 @@
 #pragma once
 // The control: runs compiled programs block by block in Fanuc order and emits canonical
 // events. Jobs are split by file: executor.cpp (run loop, flow, calls), eval.cpp
-// (expressions), variables.cpp (#variables incl. system ones), nc_block.cpp (words, modal
-// state, M/S/T), motion.cpp (positions and moves), print.cpp (DPRNT/BPRNT).
+// (expressions), macro_variables.hpp (the component that owns #0-#999), variables.cpp (the
+// system variables), nc_block.cpp (words, modal state, M/S/T), motion.cpp (positions and
+// moves), print.cpp (DPRNT/BPRNT). docs/architecture.md maps the components.
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -18,6 +19,8 @@
 #include "core/alarm.hpp"
 #include "core/value.hpp"
 #include "exec/gcode_table.hpp"
+#include "exec/interface_signals.hpp"
+#include "exec/macro_variables.hpp"
 #include "lang/ir.hpp"
 #include "lang/program_store.hpp"
 #include "machine/offsets.hpp"
@@ -87,13 +90,13 @@ class Executor {
   // Non-vacant level-0 locals and common variables, for the state file.
   std::vector<std::pair<int, double>> userVariables() const;
   // The interface signal outputs as the program left them: 0 = UO000-UO031, 1 = UO100-UO131.
-  uint32_t signalOutputs(int word) const { return signalOut_[static_cast<size_t>(word)]; }
+  uint32_t signalOutputs(int word) const { return signals_.outputs(word); }
   // #1-#33 of the current call level and #100-#199, as readVar gives them: the web viewer
   // compares them after every event (src/server/state_diff.cpp), where 133 calls would cost.
   const std::array<Value, 33>& currentLocals() const {
-    return locals_[static_cast<size_t>(frames_.empty() ? 0 : frames_.back().level)];
+    return vars_.locals(frames_.empty() ? 0 : frames_.back().level);
   }
-  const std::array<Value, 100>& common100() const { return common100_; }
+  const std::array<Value, 100>& common100() const { return vars_.common100(); }
   // The control's persistent memory (offsets, #500-#999, part counters). Replace it before
   // run() to start from a saved machine state; read it after run() to save one.
   MachineMemory& memory() { return mem_; }
@@ -150,24 +153,11 @@ class Executor {
   int macroDepth_ = 0, subDepth_ = 0;
 
   // ---- variables ----
-  static constexpr int kMaxLevels = 16;
-  std::array<std::array<Value, 33>, kMaxLevels> locals_{};
-  // ADP: for locals set from an argument written without a decimal point, the factor that
-  // undoes the scaling (1000 for IS-B mm); 0 otherwise.
-  std::array<std::array<double, 33>, kMaxLevels> noPointScale_{};
-  std::array<std::array<Value, 33>, kMaxLevels> callArgs_{};  // for L repeats
-  std::array<std::array<double, 33>, kMaxLevels> callArgScale_{};
-  std::array<Value, 100> common100_{};
-  std::array<Value, 300> common200_{};  // #200-#499, with options.common_vars_200
+  // #0-#999 are the MacroVariables component's (vars_, below); the system variables keep
+  // their state here.
+  int localLevel() const { return frames_.empty() ? 0 : frames_.back().level; }
   double timerMsOffset_ = 0, timerHourOffset_ = 0;
-  // Interface signals (variables.cpp): reads so far of each input #1000-#1032 (its place in the
-  // setup's list), whether its missing-input warning was given, and the outputs UO000-UO031
-  // (#1100-#1131, #1132) and UO100-UO131 (#1133).
-  std::array<uint32_t, 33> signalReads_{};
-  std::array<bool, 33> signalWarned_{};
-  std::array<uint32_t, 2> signalOut_{};
-  double readSignalInput(int n);
-  void writeSignalOutput(int n, Value v);
+  InterfaceSignals signals_{setup_.signals};  // #1000-#1032, #1100-#1133
   std::array<Value, 64> evalStack_{};
   double sys3003_ = 0, sys3004_ = 0, sys3005_ = 0;
 
@@ -185,6 +175,8 @@ class Executor {
   std::array<int64_t, kMaxAxes> machine_{};  // nm / micro-degree, physical (lathe X radius)
   std::array<int64_t, kMaxAxes> offset_{};   // machine = work + offset_ (sum of the below)
   MachineMemory mem_;
+  // #0-#999 (macro_variables.hpp); declared after mem_, whose #500-#999 it keeps.
+  MacroVariables vars_{mem_.common500, setup_.commonVars200};
   int workIndex_ = kWorkG54;                     // selected work offset table
   std::array<int64_t, kMaxAxes> g52_{}, g92_{};  // local system and G92/G50 shift
   std::array<int64_t, kMaxAxes> toolShift_{};    // tool length (mill) or tool offset (lathe)

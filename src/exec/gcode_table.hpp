@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace ncvm {
+#include "machine/series.hpp"
 
-enum class Series : uint8_t { M, TA, TB, TC };
+namespace ncvm {
 
 enum class GStatus : uint8_t {
   Supported,  // executed as the control does
@@ -22,10 +22,6 @@ struct GCodeInfo {
   GStatus status;
   const char* meaning;
 };
-
-constexpr uint8_t seriesBit(Series s) {
-  return static_cast<uint8_t>(1u << static_cast<unsigned>(s));
-}
 
 const std::vector<GCodeInfo>& gcodeTable();
 // nullptr when the series has no such code.

@@ -1,5 +1,5 @@
-// Macro variables: #0, locals per call level, common #100-#199 and #500-#999, and the
-// system variables of fanuc-reference B.8-B.10.
+// The system variables of fanuc-reference B.8-B.10 (#1000 and up), which read and change the
+// machine; #0-#999 are the MacroVariables component's (macro_variables.hpp).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,16 +17,6 @@ int Executor::axisByNumber(int n) const {
     if (++seen == n) return k;
   }
   return -1;
-}
-
-// #200-#499 exist only with the option that adds common variables.
-static void common200Option(const Setup& setup, int64_t n) {
-  if (!setup.commonVars200)
-    throw AlarmError(
-        AlarmId::VariableOutOfRange,
-        fmt::format("#{}: common variables #200-#499 are an option (options.common_vars_200 = true "
-                    "in the setup)",
-                    n));
 }
 
 // PS0115 for a number ncvm does not know: the Fanuc range it is in when there is one, so a
@@ -60,101 +50,16 @@ static AlarmError unknownVariable(int64_t n) {
   return AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
 }
 
+// #0-#999 belong to the macro variables (macro_variables.hpp); the rest is the system's.
 Value Executor::readVar(int64_t n) {
-  if (n >= 1 && n <= 33)
-    return locals_[static_cast<size_t>(frames_.back().level)][static_cast<size_t>(n - 1)];
-  if (n >= 100 && n <= 199) return common100_[static_cast<size_t>(n - 100)];
-  if (n >= 500 && n <= 999) return mem_.common500[static_cast<size_t>(n - 500)];
-  if (n == 0) return Value::vacant();
-  if (n >= 1000) return readSystem(n);
-  if (n >= 200 && n <= 499) {
-    common200Option(setup_, n);
-    return common200_[static_cast<size_t>(n - 200)];
-  }
-  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
+  if (n < 1000) return vars_.read(n, frames_.back().level);
+  return readSystem(n);
 }
 
 void Executor::writeVar(int64_t n, Value v) {
+  if (n < 1000) return vars_.write(n, v, localLevel());
   if (!v.null && !std::isfinite(v.v)) throw AlarmError(AlarmId::FloatOverflow);
-  if (n >= 1 && n <= 33) {
-    auto L = static_cast<size_t>(frames_.empty() ? 0 : frames_.back().level);
-    locals_[L][static_cast<size_t>(n - 1)] = v;
-    noPointScale_[L][static_cast<size_t>(n - 1)] = 0;
-    return;
-  }
-  if (n >= 100 && n <= 199) {
-    common100_[static_cast<size_t>(n - 100)] = v;
-    return;
-  }
-  if (n >= 500 && n <= 999) {
-    mem_.common500[static_cast<size_t>(n - 500)] = v;
-    return;
-  }
-  if (n == 0) throw AlarmError(AlarmId::WriteProtectedVariable, "#0");
-  if (n >= 1000) return writeSystem(n, v);
-  if (n >= 200 && n <= 499) {
-    common200Option(setup_, n);
-    common200_[static_cast<size_t>(n - 200)] = v;
-    return;
-  }
-  throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}", n));
-}
-
-// An input as the setup gives it ([signals]): each read takes the next value of its list, the
-// last one repeating. A bit the setup does not give comes from #1032's word when that is
-// given; #1032 not given is made of the bits that are (the others 0).
-double Executor::readSignalInput(int n) {
-  const auto& inputs = setup_.signals.inputs;
-  auto next = [&](int v) {
-    const std::vector<double>& values = inputs.at(v);
-    uint32_t& k = signalReads_[static_cast<size_t>(v - 1000)];
-    double x = values[std::min<size_t>(k, values.size() - 1)];
-    if (k < values.size()) ++k;
-    return x;
-  };
-  if (inputs.count(n)) return next(n);
-  if (n < 1032) {
-    if (inputs.count(1032))
-      return static_cast<double>((static_cast<uint32_t>(next(1032)) >> (n - 1000)) & 1u);
-  } else {
-    bool any = false;
-    uint32_t word = 0;
-    for (int k = 0; k < 32; ++k)
-      if (inputs.count(1000 + k)) {
-        any = true;
-        if (next(1000 + k) != 0) word |= 1u << k;
-      }
-    if (any) return static_cast<double>(word);
-  }
-  const std::string what = n < 1032 ? fmt::format("#{} (input signal UI{:03d})", n, n - 1000)
-                                    : std::string("#1032 (input signals UI000-UI031)");
-  if (setup_.signals.missingAlarm) throw AlarmError(AlarmId::SignalNotGiven, what);
-  if (!signalWarned_[static_cast<size_t>(n - 1000)]) {
-    signalWarned_[static_cast<size_t>(n - 1000)] = true;
-    warn("W006", what + " is not in the setup's [signals]: it reads 0");
-  }
-  return 0;
-}
-
-// #1100-#1131 set one output (0 off, any other value on; vacant is 0); #1132 and #1133 set 32
-// at once (UO000-UO031, UO100-UO131; a negative value is its 32-bit two's complement).
-void Executor::writeSignalOutput(int n, Value v) {
-  const double x = v.null ? 0.0 : v.v;
-  double stored = 0;
-  if (n <= 1131) {
-    const uint32_t bit = 1u << (n - 1100);
-    const bool on = x != 0;
-    signalOut_[0] = on ? signalOut_[0] | bit : signalOut_[0] & ~bit;
-    stored = on ? 1 : 0;
-  } else {
-    const double r = std::nearbyint(x);
-    if (!(r >= -2147483648.0 && r <= 4294967295.0))
-      throw AlarmError(AlarmId::IntegerOverflow, fmt::format("#{} takes a 32-bit value", n));
-    const auto word = static_cast<uint32_t>(static_cast<int64_t>(r));
-    signalOut_[static_cast<size_t>(n - 1132)] = word;
-    stored = static_cast<double>(word);
-  }
-  sink().onSignal(SignalEvent{origin_, n, stored});
+  writeSystem(n, v);
 }
 
 Value Executor::readSystem(int64_t n) {
@@ -181,11 +86,13 @@ Value Executor::readSystem(int64_t n) {
       throw AlarmError(AlarmId::VariableOutOfRange, fmt::format("#{}: no such axis", n));
     return Value::num(0.0);
   }
-  if (n >= 1000 && n <= 1032) return Value::num(readSignalInput(static_cast<int>(n)));
-  if (n >= 1100 && n <= 1131)
-    return Value::num(static_cast<double>((signalOut_[0] >> (n - 1100)) & 1u));
-  if (n == 1132 || n == 1133)
-    return Value::num(static_cast<double>(signalOut_[static_cast<size_t>(n - 1132)]));
+  if (n >= 1000 && n <= 1032) {
+    std::string warning;
+    const double x = signals_.readInput(static_cast<int>(n), warning);
+    if (!warning.empty()) warn("W006", std::move(warning));
+    return Value::num(x);
+  }
+  if (n >= 1100 && n <= 1133) return Value::num(signals_.readOutput(static_cast<int>(n)));
   if ((n >= 4001 && n <= 4030) || (n >= 4201 && n <= 4230)) {
     // Parameter 0001#1 (FCV) = 1, the Series 15 program format: the modal groups are read by
     // their FS15 numbers, where the work coordinate system G54-G59 is group 12 (#4012) and the
@@ -312,7 +219,11 @@ void Executor::writeSystem(int64_t n, Value v) {
     default:
       break;
   }
-  if (n >= 1100 && n <= 1133) return writeSignalOutput(static_cast<int>(n), v);
+  if (n >= 1100 && n <= 1133) {
+    const double stored = signals_.writeOutput(static_cast<int>(n), v);
+    sink().onSignal(SignalEvent{origin_, static_cast<int>(n), stored});
+    return;
+  }
   if (n == 3007 || n == 3011 || n == 3012 || n == 4000 || (n >= 4001 && n <= 4330) ||
       (n >= 5001 && n <= 5140) || (n >= 1000 && n <= 1032) || n == 3100 || n == 3101)
     throw AlarmError(AlarmId::WriteProtectedVariable, fmt::format("#{}", n));

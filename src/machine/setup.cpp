@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "machine/setup_keys.hpp"
+#include "machine/timing_keys.hpp"
 
 namespace ncvm {
 namespace {

@@ -13,9 +13,9 @@
 
 #include "canon/events.hpp"
 #include "core/units.hpp"
-#include "exec/gcode_table.hpp"
 #include "machine/offsets.hpp"
-#include "timing/timing_setup.hpp"
+#include "machine/series.hpp"
+#include "machine/timing_params.hpp"
 
 namespace ncvm {
 

@@ -1,4 +1,4 @@
-#include "timing/timing_setup.hpp"
+#include "machine/timing_keys.hpp"
 
 #include <stdexcept>
 

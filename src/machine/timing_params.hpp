@@ -1,12 +1,8 @@
 #pragma once
-// The [timing] section of the setup (docs/setup-format.md): the machine's motion limits and
-// the times of its auxiliary functions, named after the Fanuc parameters that hold them.
-// With model = "simple" (the default) ncvm keeps the plain length / feed time.
-#include <array>
-#include <string>
-#include <variant>
-#include <vector>
-
+// The [timing] section of the setup (docs/setup-format.md) as data: the machine's motion
+// limits and the times of its auxiliary functions, named after the Fanuc parameters that hold
+// them. The cycle-time model (src/timing) reads it; machine/timing_keys.hpp parses its keys.
+// With dynamic = false (model = "simple", the default) ncvm keeps the plain length / feed time.
 #include "canon/events.hpp"
 
 namespace ncvm {
@@ -36,11 +32,5 @@ struct TimingSetup {
   // does) and names it; false: operations start at tool changes only.
   bool operationComments = true;
 };
-
-// A [timing] value from the setup file or --set.
-using TimingValue = std::variant<bool, double, std::string, std::vector<double>>;
-// Applies timing.<key>; throws std::invalid_argument with the reason when the key or value
-// is wrong.
-void applyTimingKey(TimingSetup& t, const std::string& key, const TimingValue& v);
 
 }  // namespace ncvm
