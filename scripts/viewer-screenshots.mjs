@@ -1,11 +1,13 @@
 #!/usr/bin/env node
-// The pictures of docs/web-viewer.md that show the stock along the timeline and the setup
-// layers, taken from a running `ncvm serve` in headless Chromium (web/tests/harness.mjs, as the
-// browser tests), at 1400x820:
+// The pictures of README.md and docs/web-viewer.md, taken from a running `ncvm serve` in
+// headless Chromium (web/tests/harness.mjs, as the browser tests), at 1400x820:
+//   docs/images/viewer.png               the bolt-hole circle macro part way through its holes
 //   docs/images/viewer-stock.png         face-milling-g42 part way: the face mill has cut the
 //                                        first strips, the label names the snapshot's move
 //   docs/images/viewer-stock-lathe.png   convex-arc-turning part way, the profile as cut so far
 //   docs/images/viewer-setup-layers.png  the Setup tab: a preset under the program's own setup
+// and at 1280x720, the smallest layout:
+//   docs/images/viewer-light.png         the light theme, the bolt-hole circle run
 // Run after a build (make screenshots, or NCVM_BIN=build/release/bin/ncvm node scripts/...).
 import path from 'node:path';
 import { start, openExample, runAndWait, tab, repo } from '../web/tests/harness.mjs';
@@ -19,6 +21,11 @@ const scrubTo = (fraction) =>
     el.dispatchEvent(new Event('input'));
   }, fraction);
 try {
+  await openExample(page, 'macro-basics/bolt-circle.nc');
+  await runAndWait(page);
+  await scrubTo(0.5);
+  await page.screenshot({ path: out('viewer.png') });
+
   await openExample(page, 'face-milling-g42/face-milling-g42.nc');
   await runAndWait(page);
   await scrubTo(0.6); // move 8 of 16: two strips faced, two to go
@@ -36,7 +43,17 @@ try {
   await page.selectOption('#setup-layers .layer-add', 'presets|fanuc-0i-mf.toml');
   await runAndWait(page);
   await page.screenshot({ path: out('viewer-setup-layers.png') });
-  console.log('wrote docs/images/viewer-stock.png, viewer-stock-lathe.png, viewer-setup-layers.png');
 } finally {
   await h.close();
 }
+const small = await start({ width: 1280, height: 720 });
+try {
+  await openExample(small.page, 'macro-basics/bolt-circle.nc');
+  await runAndWait(small.page);
+  await small.page.click('#theme');
+  await small.page.screenshot({ path: out('viewer-light.png') });
+} finally {
+  await small.close();
+}
+console.log('wrote docs/images/viewer.png, viewer-stock.png, viewer-stock-lathe.png, ' +
+            'viewer-setup-layers.png, viewer-light.png');
