@@ -2,8 +2,12 @@
 // The evaluated words of one NC block: values after variables and expressions, with
 // whether each had a decimal point. Lives on the stack; no allocation per block.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
+
+#include "core/alarm.hpp"
 
 namespace ncvm {
 
@@ -56,5 +60,14 @@ struct Words {
     return false;
   }
 };
+
+// A word that must be a whole number (P of M98, L): rounded; beyond eight digits, or not
+// finite, the integer-overflow alarm naming the letter.
+inline int32_t integerWord(const Words& w, char letter) {
+  double v = w.value(letter);
+  if (!std::isfinite(v) || std::fabs(v) > 99999999.0)
+    throw AlarmError(AlarmId::IntegerOverflow, std::string(1, letter));
+  return static_cast<int32_t>(std::llround(v));
+}
 
 }  // namespace ncvm
