@@ -2,8 +2,10 @@
 // The control: runs compiled programs block by block in Fanuc order and emits canonical
 // events. Jobs are split by file: executor.cpp (run loop, flow, calls), eval.cpp
 // (expressions), macro_variables.hpp (the component that owns #0-#999), variables.cpp (the
-// system variables), nc_block.cpp (words, modal state, M/S/T), motion.cpp (positions and
-// moves), print.cpp (DPRNT/BPRNT). docs/architecture.md maps the components.
+// system variables), block_words.cpp (a block's words and the calls they make), nc_block.cpp
+// (modal state, M/S/T, the order of a block), motion.cpp (positions and moves),
+// reference_return.cpp (G27-G30, G53), print.cpp (DPRNT/BPRNT). docs/architecture.md maps
+// the components.
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -21,6 +23,7 @@
 #include "exec/gcode_table.hpp"
 #include "exec/interface_signals.hpp"
 #include "exec/macro_variables.hpp"
+#include "exec/modal_state.hpp"
 #include "lang/ir.hpp"
 #include "lang/program_store.hpp"
 #include "machine/offsets.hpp"
@@ -48,27 +51,6 @@ struct RunStats {
   uint64_t moves = 0;
   double rapidLength = 0, feedLength = 0;  // program units
   double time = 0;                         // seconds, simple model
-};
-
-// The modal groups are indexed by the group number of #4000+g.
-constexpr int kGroups = 32;
-
-struct ModalState {
-  std::array<int16_t, kGroups> g{};  // G code x10 per group
-  double feed = 0;                   // F as programmed
-  double speed = 0;                  // S as programmed (rpm or CSS)
-  int32_t tool = 0;                  // T
-  int32_t dOffset = 0, hOffset = 0;  // D, H
-  double e = 0, b = 0;
-  int32_t lastM = 0;
-  int32_t workP = 0;  // P of G54.1
-  InputUnit unit = InputUnit::Mm;
-  // Derived from g[] for the hot path.
-  int motion = 10;  // 0, 10, 20, 30 (x10)
-  int plane = 17;
-  bool incremental = false;
-  bool feedPerRev = false;
-  bool css = false;
 };
 
 class Executor {
